@@ -1,0 +1,48 @@
+// Float images: the one in-memory format for AOVs, references and comparisons.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace rtlab {
+
+// Row-major, rows top to bottom, `channels` floats per pixel (1 or 3). `mask` is empty or holds
+// one value per pixel: 1 on surface pixels, 0 on background (written as EXR channel A).
+struct Image {
+  int width = 0;
+  int height = 0;
+  int channels = 0;
+  std::vector<float> pixels;
+  std::vector<float> mask;
+
+  Image() = default;
+  Image(int w, int h, int c) : width(w), height(h), channels(c), pixels(std::size_t(w) * h * c, 0.0f) {}
+  float& at(int x, int y, int c) { return pixels[(std::size_t(y) * width + x) * channels + c]; }
+  float at(int x, int y, int c) const { return pixels[(std::size_t(y) * width + x) * channels + c]; }
+  bool hasMask() const { return !mask.empty(); }
+  std::size_t pixelCount() const { return std::size_t(width) * height; }
+};
+
+// How a PNG encodes an image (CONTRACT.md "Images and AOVs").
+enum class PngEncoding {
+  Linear01,   // clamp to [0,1], linear (visibility, ao, albedo)
+  Srgb,       // clamp to [0,1], sRGB transfer (already tone-mapped color)
+  Normal,     // n*0.5+0.5
+  NormalizeRange // map [min,max] over valid pixels to [0,1] (depth)
+};
+
+enum class ImageFormat { Png, Exr, Pfm };
+
+// From the file extension (.png .exr .pfm, case-insensitive); throws Error(Usage) otherwise.
+ImageFormat imageFormatFromPath(const std::string& path);
+
+// Writes atomically (util/atomic_file.h); throws Error(Output) naming the path on failure.
+// PNG: 8-bit, 1 channel -> gray, 3 -> RGB. EXR: 32-bit float, channels Y or R,G,B, plus A from the
+// mask when present. PFM: little-endian (scale -1), rows bottom-to-top, Pf (1 ch) or PF (3 ch).
+void writeImage(const std::string& path, const Image& image, PngEncoding png = PngEncoding::Linear01);
+
+// Reads PNG (as linear [0,1] values of the stored bytes, no sRGB decode), EXR (Y or RGB; A becomes
+// the mask) and PFM. Throws Error(Input) naming the path when missing, unreadable or invalid.
+Image readImage(const std::string& path);
+
+} // namespace rtlab

@@ -1,0 +1,33 @@
+// Errors that reach the user: one line, one exit code (CONTRACT.md "Exit codes").
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace rtlab {
+
+enum class ExitCode : int {
+  Ok = 0,
+  Internal = 1,
+  Usage = 2,        // unknown command/option/technique/key/scene/AOV, bad syntax, out of range
+  Input = 3,        // input file missing, unreadable or invalid; compare size mismatch
+  NoContext = 4,    // no GL context; view without display
+  Shader = 5,       // shader compile or link failure
+  Output = 6,       // output file could not be written
+  Interrupted = 130 // SIGINT
+};
+
+// Thrown for every user-facing failure. what() is the message without the "rtlab: error: " prefix.
+class Error : public std::runtime_error {
+public:
+  Error(ExitCode code, const std::string& message) : std::runtime_error(message), m_code(code) {}
+  ExitCode code() const { return m_code; }
+
+private:
+  ExitCode m_code;
+};
+
+[[noreturn]] inline void usageError(const std::string& msg) { throw Error(ExitCode::Usage, msg); }
+[[noreturn]] inline void inputError(const std::string& msg) { throw Error(ExitCode::Input, msg); }
+[[noreturn]] inline void outputError(const std::string& msg) { throw Error(ExitCode::Output, msg); }
+
+} // namespace rtlab
