@@ -19,8 +19,11 @@ namespace {
 // Fixed-size table so the SIGINT handler can walk it without allocating.
 constexpr int kMaxTemporaries = 64;
 constexpr int kMaxPath = 4096;
+// A slot is claimed (Free -> Filling) before its path is copied and published (-> Ready) after,
+// so two threads never write the same slot and the handler never reads a half-written path.
+enum SlotState : int { kSlotFree = 0, kSlotFilling = 1, kSlotReady = 2 };
 struct TempSlot {
-  std::atomic<bool> used{false};
+  std::atomic<int> state{kSlotFree};
   char path[kMaxPath];
 };
 std::array<TempSlot, kMaxTemporaries> g_slots;
@@ -28,16 +31,17 @@ std::array<TempSlot, kMaxTemporaries> g_slots;
 int claimSlot(const std::string& path) {
   if (path.size() + 1 > kMaxPath) return -1;
   for (int i = 0; i < kMaxTemporaries; ++i) {
-    bool expected = false;
-    if (g_slots[i].used.load()) continue;
+    int expected = kSlotFree;
+    if (!g_slots[i].state.compare_exchange_strong(expected, kSlotFilling)) continue;
     std::memcpy(g_slots[i].path, path.c_str(), path.size() + 1);
-    if (g_slots[i].used.compare_exchange_strong(expected, true)) return i;
+    g_slots[i].state.store(kSlotReady);
+    return i;
   }
   return -1;
 }
 
 void releaseSlot(int slot) {
-  if (slot >= 0) g_slots[slot].used.store(false);
+  if (slot >= 0) g_slots[slot].state.store(kSlotFree);
 }
 
 std::string temporaryName(const std::string& path) {
@@ -68,6 +72,8 @@ void writeFileAtomically(const std::string& path, const std::function<bool(const
     throw;
   } catch (const std::exception& e) {
     reason = e.what();
+  } catch (...) {
+    reason = "unknown error";
   }
   if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) {
     ok = false;
@@ -94,7 +100,7 @@ void writeTextAtomically(const std::string& path, const std::string& contents) {
 
 void removeTemporaries() {
   for (auto& slot : g_slots)
-    if (slot.used.load()) ::unlink(slot.path);
+    if (slot.state.load() == kSlotReady) ::unlink(slot.path);
 }
 
 std::string readFileOrThrow(const std::string& path, const char* what) {
@@ -106,4 +112,19 @@ std::string readFileOrThrow(const std::string& path, const char* what) {
   return os.str();
 }
 
+} // namespace rtlab
+
+#include <filesystem>
+
+namespace rtlab {
+void checkOutputPath(const std::string& path) {
+  namespace fs = std::filesystem;
+  if (path.empty()) outputError("empty output path");
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) outputError("cannot write '" + path + "': it is a directory");
+  fs::path dir = fs::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  if (!fs::is_directory(dir, ec)) outputError("cannot write '" + path + "': directory '" + dir.string() + "' does not exist");
+  if (::access(dir.c_str(), W_OK) != 0) outputError("cannot write '" + path + "': directory '" + dir.string() + "' is not writable");
+}
 } // namespace rtlab

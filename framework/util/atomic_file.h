@@ -21,3 +21,9 @@ void removeTemporaries();
 std::string readFileOrThrow(const std::string& path, const char* what = "file");
 
 } // namespace rtlab
+
+namespace rtlab {
+// Fails early (Error(Output) naming the path) when the file's directory does not exist or is not
+// writable, or the path is a directory: checked before long work so nothing is computed in vain.
+void checkOutputPath(const std::string& path);
+} // namespace rtlab

@@ -1,0 +1,86 @@
+// rtlab render: one frame (or --frames N measured frames) headless, one AOV to an image, stats.
+#include "app/commands.h"
+#include "app/frame_options.h"
+#include "app/run_info.h"
+#include "frame/aovs.h"
+#include "frame/registry.h"
+#include "frame/renderer.h"
+#include "gl/debug.h"
+#include "image/image.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+#include "util/log.h"
+
+#include <cstdio>
+#include <iostream>
+
+namespace rtlab {
+namespace {
+
+std::vector<OptionSpec> renderOptions() {
+  auto specs = frameOptionSpecs();
+  specs.push_back({"--aov", "", true, "NAME", "output: color (default), visibility, ao, indirect, depth, normal, albedo, or a debug view"});
+  specs.push_back({"--out", "", true, "FILE", "output image .png/.exr/.pfm (default <scene>_<aov>.png)"});
+  specs.push_back({"--stats", "", true, "FILE.json", "write timings, resources and resolved parameters"});
+  return specs;
+}
+
+PngEncoding pngEncodingFor(const std::string& aov) {
+  if (aov == "color") return PngEncoding::Srgb;
+  if (aov == "normal") return PngEncoding::Normal;
+  if (aov == "depth") return PngEncoding::NormalizeRange;
+  return PngEncoding::Linear01;
+}
+
+} // namespace
+
+int runRender(int argc, char** argv) {
+  const auto specs = renderOptions();
+  Args args("render", specs, argc, argv, 2);
+  if (args.help()) {
+    std::cout << formatHelp("rtlab render [scene and frame options] [--aov NAME] [--out FILE] [--stats FILE.json]",
+                            "Renders the scene headless with the active techniques and writes one AOV.", specs);
+    return 0;
+  }
+  ResolvedFrame frame = resolveFrame(args);
+  const std::string aov = args.get("--aov", "color");
+  const TechniqueRegistry& registry = TechniqueRegistry::instance();
+  checkAovName(aov, frame.techniques, registry);
+  const std::string out = args.get("--out", frame.scene.name + "_" + aov + ".png");
+  const ImageFormat format = imageFormatFromPath(out);
+  const std::string statsPath = args.get("--stats");
+  if (args.has("--stats") && statsPath.empty()) usageError("--stats needs a file name");
+  checkOutputPath(out);
+  if (!statsPath.empty()) checkOutputPath(statsPath);
+  if (!frame.options.savePreset.empty()) checkOutputPath(frame.options.savePreset);
+
+  auto context = createHeadlessContext(frame.options.backend);
+  const TimingMethod timing = resolveTiming(frame.options.timing, context->info().software);
+  Renderer renderer(registry);
+  renderer.setScene(frame.scene);
+  renderer.setTechniques(frame.techniques);
+  drainGlErrors(); // set-up errors are not a frame's
+
+  const bool display = aov == "color" && format == ImageFormat::Png;
+  FrameOutputs outputs;
+  if (!display) outputs.aovs = {aov};
+  outputs.displayColor = display;
+  PassTimer timer(timing);
+  FrameStats stats;
+  const int warmup = frame.options.frames > 1 ? 2 : 0;
+  for (int i = 0; i < warmup + frame.options.frames; ++i) {
+    renderer.render(frame.params, frame.options.width, frame.options.height, outputs, timer);
+    const int errors = drainGlErrors();
+    if (i >= warmup) stats.addFrame(timer, errors);
+  }
+  stats.setResources(renderer.resources());
+  if (stats.glErrors() > 0) logWarn(std::to_string(stats.glErrors()) + " GL errors during the measured frames");
+
+  Image image = display ? renderer.readDisplayColor() : renderer.readAov(aov);
+  writeImage(out, image, pngEncodingFor(aov));
+  if (!statsPath.empty()) writeTextAtomically(statsPath, statsJson(frame, *context, timing, stats).dump(2) + "\n");
+  saveRequestedPreset(frame);
+  return 0;
+}
+
+} // namespace rtlab

@@ -1,0 +1,10 @@
+// The rtlab commands (CONTRACT.md "Commands"). Each returns the process exit code or throws Error.
+#pragma once
+
+namespace rtlab {
+
+int runList(int argc, char** argv);
+int runRender(int argc, char** argv);
+int runView(int argc, char** argv);
+
+} // namespace rtlab

@@ -1,0 +1,69 @@
+// rtlab: the command-line entry point. Every failure is one line on stderr beginning
+// "rtlab: error:" and a documented exit code (CONTRACT.md "Exit codes").
+#include "app/commands.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+#include "util/version.h"
+
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <string>
+
+namespace {
+
+void onInterrupt(int) {
+  rtlab::removeTemporaries();
+  static const char kMsg[] = "rtlab: error: interrupted\n";
+  [[maybe_unused]] auto n = ::write(2, kMsg, sizeof(kMsg) - 1);
+  ::_exit(int(rtlab::ExitCode::Interrupted));
+}
+
+const char* kUsage =
+    "Usage: rtlab <command> [options]\n\n"
+    "An OpenGL 4.5 teaching sandbox for real-time rendering techniques.\n\n"
+    "Commands:\n"
+    "  list       stages, techniques, parameters, scenes and AOVs (--json for scripts)\n"
+    "  render     render headless to an image, with --stats timings\n"
+    "  view       show the frame in a window\n"
+    "  --version  version and git commit\n\n"
+    "'rtlab <command> --help' describes a command's options.\n";
+
+} // namespace
+
+int main(int argc, char** argv) {
+  std::signal(SIGINT, onInterrupt);
+  std::signal(SIGTERM, onInterrupt);
+  using namespace rtlab;
+  try {
+    if (argc < 2) {
+      std::fputs(kUsage, stderr);
+      return int(ExitCode::Usage);
+    }
+    const std::string command = argv[1];
+    if (command == "--version" || command == "version") {
+      std::printf("rtlab %s (commit %s)\n", versionString(), gitCommit());
+      return 0;
+    }
+    if (command == "--help" || command == "-h" || command == "help") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
+    if (command == "list") return runList(argc, argv);
+    if (command == "render") return runRender(argc, argv);
+    if (command == "view") return runView(argc, argv);
+    usageError("unknown command '" + command + "' (commands: list, render, view; see 'rtlab --help')");
+  } catch (const Error& e) {
+    std::fprintf(stderr, "rtlab: error: %s\n", e.what());
+    return int(e.code());
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "rtlab: error: out of memory\n");
+    return int(ExitCode::Internal);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "rtlab: error: internal: %s\n", e.what());
+    return int(ExitCode::Internal);
+  }
+}

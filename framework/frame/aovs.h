@@ -1,0 +1,17 @@
+// AOV names a frame can output: the built-in ones and the active techniques' debug views.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace rtlab {
+
+class TechniqueRegistry;
+
+// Error(Usage) if the AOV is unknown, or is a debug view of a technique that is not active.
+void checkAovName(const std::string& aov, const std::vector<std::string>& activeTechniques,
+                  const TechniqueRegistry& registry);
+bool isBuiltinAov(const std::string& aov);
+// Channels of a known AOV (1 or 3); Error(Internal) if unknown.
+int aovChannels(const std::string& aov, const TechniqueRegistry& registry);
+
+} // namespace rtlab

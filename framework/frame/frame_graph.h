@@ -1,0 +1,96 @@
+// The per-frame pass graph (DESIGN.md "The frame"; Falcor's reflect() and Filament's addPass are
+// the models). Every frame the renderer and the active techniques add passes; each pass declares
+// the resources it reads and writes in `setup`, and does its GL work in `execute`. compile() keeps
+// only the passes that feed a requested output, allocates their textures from the pool (reusing
+// last frame's when the description matches, releasing the rest), and run() executes and times
+// them. A technique that is off adds no pass and holds no pool memory.
+#pragma once
+#include "frame/frame_view.h"
+#include "gl/texture.h"
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace rtlab {
+
+class ParamSet;
+class PassTimer;
+class ResourcePool;
+class SceneGpu;
+struct GpuCommon;
+struct Scene;
+namespace gl { class ProgramCache; }
+
+class PassBuilder {
+public:
+  void read(const std::string& resource) { m_reads.push_back(resource); }
+  // Read when some pass produces it this frame; the execute function checks ctx.has().
+  void readIfPresent(const std::string& resource) { m_optionalReads.push_back(resource); }
+  void write(const std::string& resource, const gl::TextureDesc& desc) { m_writes.emplace_back(resource, desc); }
+
+private:
+  friend class FrameGraph;
+  std::vector<std::string> m_reads, m_optionalReads;
+  std::vector<std::pair<std::string, gl::TextureDesc>> m_writes;
+};
+
+// Everything a pass's execute function may use.
+struct PassContext {
+  const Scene& scene;
+  const ParamSet& params;
+  const FrameView& view;
+  SceneGpu& sceneGpu;
+  gl::ProgramCache& programs;
+  ResourcePool& pool;
+  const GpuCommon& common;
+  bool has(const std::string& resource) const;
+  gl::Texture& texture(const std::string& resource) const; // Error(Internal) if absent
+};
+
+class FrameGraph {
+public:
+  FrameGraph(const Scene& scene, const ParamSet& params, const FrameView& view, SceneGpu& sceneGpu,
+             gl::ProgramCache& programs, ResourcePool& pool, const GpuCommon& common);
+
+  // Passes added after this are attributed to `technique` in stats ("" = the framework).
+  void setTechnique(const std::string& technique) { m_technique = technique; }
+  void addPass(const std::string& name, const std::function<void(PassBuilder&)>& setup,
+               std::function<void(PassContext&)> execute);
+
+  const Scene& scene() const { return m_ctx.scene; }
+  const ParamSet& params() const { return m_ctx.params; }
+  const FrameView& view() const { return m_ctx.view; }
+  int width() const { return m_ctx.view.width; }
+  int height() const { return m_ctx.view.height; }
+  // True if a pass added so far writes the resource.
+  bool isProduced(const std::string& resource) const;
+
+  // Culls to what `targets` need, then allocates. Error(Internal) if a target or a required read
+  // has no producer.
+  void compile(const std::vector<std::string>& targets);
+  // Executes the kept passes in order, each bracketed by the timer.
+  void run(PassTimer& timer);
+
+  struct PassRecord {
+    std::string name, technique;
+    bool kept = false;
+  };
+  std::vector<PassRecord> passes() const;
+
+private:
+  struct Pass {
+    std::string name, technique;
+    PassBuilder decl;
+    std::function<void(PassContext&)> execute;
+    bool kept = false;
+  };
+  PassContext m_ctx;
+  std::string m_technique;
+  std::vector<Pass> m_passes;
+};
+
+} // namespace rtlab

@@ -1,0 +1,127 @@
+#include "frame/renderer.h"
+
+#include "frame/aovs.h"
+#include "frame/frame_graph.h"
+#include "frame/registry.h"
+#include "frame/stages.h"
+#include "params/param_set.h"
+#include "scene/scene_params.h"
+#include "shading/base_passes.h"
+#include "util/error.h"
+
+#include <algorithm>
+
+namespace rtlab {
+namespace {
+
+Image readTexture(const gl::Texture& tex, int channels, bool withMask) {
+  const int w = tex.desc().width, h = tex.desc().height;
+  std::vector<float> rgba(std::size_t(w) * h * 4);
+  glGetTextureImage(tex.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
+  Image img(w, h, channels);
+  if (withMask) img.mask.resize(std::size_t(w) * h);
+  for (int y = 0; y < h; ++y) {
+    const int srcRow = h - 1 - y; // GL rows are bottom to top
+    for (int x = 0; x < w; ++x) {
+      const float* src = &rgba[(std::size_t(srcRow) * w + x) * 4];
+      for (int c = 0; c < channels; ++c) img.at(x, y, c) = src[c];
+      if (withMask) img.mask[std::size_t(y) * w + x] = src[3];
+    }
+  }
+  return img;
+}
+
+} // namespace
+
+Renderer::Renderer(const TechniqueRegistry& registry) : m_registry(registry) {}
+
+Renderer::~Renderer() {
+  m_techniques.clear();
+  m_pool.releaseAll();
+}
+
+void Renderer::setScene(const Scene& scene) {
+  m_scene = scene;
+  m_sceneGpu = std::make_unique<SceneGpu>(m_scene);
+}
+
+void Renderer::setTechniques(const std::vector<std::string>& orderedIds) {
+  for (auto it = m_techniques.begin(); it != m_techniques.end();) {
+    if (std::find(orderedIds.begin(), orderedIds.end(), it->first) == orderedIds.end()) it = m_techniques.erase(it);
+    else ++it;
+  }
+  for (const auto& id : orderedIds)
+    if (!m_techniques.count(id)) m_techniques.emplace(id, m_registry.get(id).create());
+  m_order = orderedIds;
+}
+
+void Renderer::checkAov(const std::string& aov) const { checkAovName(aov, m_order, m_registry); }
+
+void Renderer::render(const ParamSet& params, int width, int height, const FrameOutputs& outputs, PassTimer& timer) {
+  if (!m_sceneGpu) throw Error(ExitCode::Internal, "render() before setScene()");
+  for (const auto& aov : outputs.aovs) checkAov(aov);
+  applySceneParams(params, m_scene);
+  m_common.uploadLights(m_scene);
+  const FrameView view = makeFrameView(m_scene.camera, width, height);
+  FrameGraph graph(m_scene, params, view, *m_sceneGpu, m_programs, m_pool, m_common);
+
+  auto setupStage = [&](const std::string& stage) {
+    for (const auto& id : m_order) {
+      Technique& t = *m_techniques.at(id);
+      if (t.info().stage != stage) continue;
+      graph.setTechnique(id);
+      t.setup(graph);
+    }
+    graph.setTechnique("");
+  };
+  addGBufferPass(graph);
+  for (const char* stage : {"shadow", "ao", "indirect"}) setupStage(stage);
+  addLightingPass(graph);
+  setupStage("arealight");
+  if (m_scene.hasTransparency()) {
+    const bool oit = std::any_of(m_order.begin(), m_order.end(),
+                                 [&](const std::string& id) { return m_techniques.at(id)->info().stage == "transparency"; });
+    if (oit) setupStage("transparency");
+    else addTransparentPass(graph);
+  }
+  setupStage("post");
+  addTonemapPass(graph);
+
+  std::vector<std::string> targets;
+  for (const auto& aov : outputs.aovs) targets.push_back(isBuiltinAov(aov) ? addAovPass(graph, aov) : aovResource(aov));
+  if (outputs.displayColor) targets.push_back(res::kColorLdr);
+  graph.compile(targets);
+  timer.beginFrame();
+  graph.run(timer);
+  timer.endFrame();
+  m_lastPasses.clear();
+  for (const auto& p : graph.passes()) m_lastPasses.push_back(PassInfo{p.name, p.technique, p.kept});
+}
+
+Image Renderer::readAov(const std::string& aov) const {
+  const gl::Texture* tex = const_cast<ResourcePool&>(m_pool).find(aovResource(aov));
+  if (!tex) throw Error(ExitCode::Internal, "AOV '" + aov + "' was not rendered");
+  return readTexture(*tex, aovChannels(aov, m_registry), true);
+}
+
+Image Renderer::readDisplayColor() const {
+  const gl::Texture* tex = const_cast<ResourcePool&>(m_pool).find(res::kColorLdr);
+  if (!tex) throw Error(ExitCode::Internal, "display color was not rendered");
+  return readTexture(*tex, 3, false);
+}
+
+const gl::Texture* Renderer::resource(const std::string& name) { return m_pool.find(name); }
+
+std::vector<ResourceUse> Renderer::resources() const {
+  std::vector<ResourceUse> out;
+  for (const auto& e : m_pool.entries()) out.push_back(ResourceUse{e.name, e.bytes});
+  if (m_sceneGpu) {
+    out.push_back(ResourceUse{"scene.geometry", m_sceneGpu->geometryBytes()});
+    out.push_back(ResourceUse{"scene.textures", m_sceneGpu->textureBytes()});
+  }
+  for (const auto& [id, t] : m_techniques)
+    if (t->ownedBytes() > 0) out.push_back(ResourceUse{id + ".owned", t->ownedBytes()});
+  return out;
+}
+
+} // namespace rtlab

@@ -1,0 +1,79 @@
+// Renders frames of one scene with the active techniques: builds the frame graph in the fixed
+// stage order, culls it to the requested outputs, runs and times it, and reads AOVs back.
+// One Renderer per GL context; it owns the program cache, the resource pool and the scene's GPU
+// data, and the instances of the active techniques (a technique turned off is destroyed, and its
+// pool textures are released at the next frame).
+#pragma once
+#include "frame/pass_timer.h"
+#include "frame/resource_pool.h"
+#include "frame/stats.h"
+#include "frame/technique.h"
+#include "gl/program_cache.h"
+#include "image/image.h"
+#include "scene/scene.h"
+#include "shading/gpu_common.h"
+#include "shading/scene_gpu.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rtlab {
+
+class ParamSet;
+class TechniqueRegistry;
+
+// What one frame must produce.
+struct FrameOutputs {
+  std::vector<std::string> aovs; // built-in AOV names or active techniques' debug views
+  bool displayColor = false;     // also produce tone-mapped color (color.ldr) for PNG or a window
+};
+
+class Renderer {
+public:
+  explicit Renderer(const TechniqueRegistry& registry);
+  ~Renderer();
+
+  // Copies the scene and uploads it.
+  void setScene(const Scene& scene);
+  const Scene& scene() const { return m_scene; }
+  // Instantiates newly active techniques and destroys the ones no longer active.
+  void setTechniques(const std::vector<std::string>& orderedIds);
+  const std::vector<std::string>& techniques() const { return m_order; }
+
+  // Error(Usage) if an AOV is unknown or belongs to an inactive technique.
+  void checkAov(const std::string& aov) const;
+  // Renders one frame at width x height; the scene's lights and camera take their values from
+  // `params` first. Timings go to `timer`.
+  void render(const ParamSet& params, int width, int height, const FrameOutputs& outputs, PassTimer& timer);
+
+  // Reads an AOV of the last frame: channels 1 or 3, rows top to bottom, mask from coverage.
+  Image readAov(const std::string& aov) const;
+  // The tone-mapped color of the last frame (linear, 3 channels; sRGB is applied on output).
+  Image readDisplayColor() const;
+  // Texture of a resource of the last frame (the viewer draws it), or nullptr.
+  const gl::Texture* resource(const std::string& name);
+
+  std::vector<ResourceUse> resources() const;
+  // Passes of the last frame (kept or culled).
+  struct PassInfo {
+    std::string name, technique;
+    bool kept;
+  };
+  const std::vector<PassInfo>& lastPasses() const { return m_lastPasses; }
+  gl::ProgramCache& programs() { return m_programs; }
+
+private:
+  const TechniqueRegistry& m_registry;
+  Scene m_scene;
+  std::unique_ptr<SceneGpu> m_sceneGpu;
+  gl::ProgramCache m_programs;
+  ResourcePool m_pool;
+  GpuCommon m_common;
+  std::map<std::string, std::unique_ptr<Technique>> m_techniques;
+  std::vector<std::string> m_order;
+  std::vector<PassInfo> m_lastPasses;
+};
+
+} // namespace rtlab

@@ -1,0 +1,67 @@
+#include "frame/stages.h"
+
+namespace rtlab {
+
+const std::vector<StageInfo>& stages() {
+  static const std::vector<StageInfo> list = [] {
+    std::vector<StageInfo> s;
+    StageInfo shadow{"shadow", true, "visibility", {}};
+    shadow.params = {
+        ParamSpec::integer("shadow.resolution", "Map resolution", 2048, 256, 4096)
+            .logScale().withUnit("texels").withFlags(kParamRealloc)
+            .withHelp("Width and height of the light-space depth map (per cube face for point lights)"),
+        ParamSpec::choice("shadow.depth_format", "Depth format", {"16", "24", "32f"}, 1)
+            .withFlags(kParamRealloc).withHelp("Depth buffer format of the light-space map: 16-bit, 24-bit or 32-bit float"),
+        ParamSpec::real("shadow.constant_bias", "Constant bias", 0.001, 0.0, 0.05)
+            .withUnit("depth [0,1]").withHelp("Subtracted from the receiver's light-space depth before the comparison"),
+        ParamSpec::real("shadow.slope_bias", "Slope bias", 1.5, 0.0, 4.0)
+            .withUnit("x depth slope").withHelp("Polygon offset factor in the light pass: bias proportional to the depth slope"),
+        ParamSpec::real("shadow.normal_bias", "Normal offset", 0.5, 0.0, 2.0)
+            .withUnit("texels").withHelp("Receiver moved along its geometric normal by this many shadow-map texels"),
+        ParamSpec::boolean("shadow.cull_front", "Cull front faces", false)
+            .withHelp("Render back faces only into the map (closed meshes only; single-sided planes then cast no shadow)"),
+    };
+    s.push_back(shadow);
+    StageInfo ao{"ao", true, "ao", {}};
+    ao.params = {ParamSpec::real("ao.radius", "AO radius", 0.5, 0.01, 10.0)
+                     .logScale().withUnit("scene units")
+                     .withHelp("Occluders farther than this from the point do not occlude (every AO technique and the reference)")};
+    s.push_back(ao);
+    s.push_back(StageInfo{"indirect", true, "indirect", {}});
+    s.push_back(StageInfo{"arealight", true, "color", {}});
+    s.push_back(StageInfo{"transparency", true, "color", {}});
+    s.push_back(StageInfo{"post", false, "color", {}});
+    return s;
+  }();
+  return list;
+}
+
+const StageInfo* findStage(const std::string& id) {
+  for (const auto& s : stages())
+    if (s.id == id) return &s;
+  return nullptr;
+}
+
+std::vector<ParamSpec> tonemapParams() {
+  return {
+      ParamSpec::real("tonemap.exposure", "Exposure", 1.0, 0.01, 100.0)
+          .logScale().withHelp("Scene radiance is multiplied by this before the tone curve"),
+      ParamSpec::choice("tonemap.operator", "Operator", {"aces", "reinhard"}, 0)
+          .withHelp("Tone curve: ACES filmic fit (Narkowicz 2015) or Reinhard x/(1+x)"),
+  };
+}
+
+const std::vector<AovInfo>& builtinAovs() {
+  static const std::vector<AovInfo> list = {
+      {"color", 3, "final image: linear radiance in EXR/PFM, tone-mapped sRGB in PNG"},
+      {"visibility", 1, "fraction of light 0 visible from the surface point (1 without a shadow technique)"},
+      {"ao", 1, "ambient occlusion within ao.radius (1 without an AO technique)"},
+      {"indirect", 3, "one-bounce diffuse irradiance (0 without an indirect technique)"},
+      {"depth", 1, "linear view depth, scene units"},
+      {"normal", 3, "world-space shading normal, unit length"},
+      {"albedo", 3, "base color (linear)"},
+  };
+  return list;
+}
+
+} // namespace rtlab

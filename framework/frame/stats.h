@@ -1,0 +1,55 @@
+// Per-pass timings over the measured frames and the resources of the last frame, written as the
+// --stats JSON of CONTRACT.md.
+#pragma once
+#include "frame/pass_timer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace rtlab {
+
+struct ResourceUse {
+  std::string name;
+  std::size_t bytes = 0;
+};
+
+class FrameStats {
+public:
+  // Adds one measured frame.
+  void addFrame(const PassTimer& timer, int glErrors);
+  void setResources(std::vector<ResourceUse> resources) { m_resources = std::move(resources); }
+
+  struct PassSummary {
+    std::string name, technique;
+    double ms = 0, msMin = 0, msMax = 0; // median, min, max over frames
+  };
+  std::vector<PassSummary> passes() const;
+  double frameMs() const; // median
+  int frames() const { return int(m_frameMs.size()); }
+  int glErrors() const { return m_glErrors; }
+  const std::vector<ResourceUse>& resources() const { return m_resources; }
+  std::size_t resourceBytes() const;
+  // Sum of the median ms of the passes attributed to `technique`.
+  double techniqueMs(const std::string& technique) const;
+
+  // Fields that depend only on what was measured: frames, frame_ms, passes, resources,
+  // resource_bytes, gl_errors. The caller adds the run's description (schema, version, ...).
+  nlohmann::ordered_json toJson() const;
+
+private:
+  struct Series {
+    std::string name, technique;
+    std::vector<double> ms;
+  };
+  std::vector<Series> m_series;
+  std::vector<double> m_frameMs;
+  std::vector<ResourceUse> m_resources;
+  int m_glErrors = 0;
+};
+
+double median(std::vector<double> values);
+
+} // namespace rtlab

@@ -1,0 +1,39 @@
+// A technique plug-in (DESIGN.md): one stage, its parameters declared once, the passes it adds to
+// the frame with their declared reads and writes, and its debug views.
+#pragma once
+#include "params/param_spec.h"
+
+#include <string>
+#include <vector>
+
+namespace rtlab {
+
+class FrameGraph;
+
+struct DebugView {
+  std::string name;  // AOV name, "<technique>.<view>", e.g. "shadow_map.light_depth"
+  int channels = 1;  // 1 or 3
+  std::string help;
+};
+
+struct TechniqueInfo {
+  std::string id;     // "shadow_map"
+  std::string stage;  // "shadow"
+  std::string title;  // "Shadow map (Williams 1978)"
+  std::string summary;
+  std::vector<ParamSpec> params;  // keys "<id>.<name>"
+  std::vector<DebugView> debugViews;
+};
+
+class Technique {
+public:
+  virtual ~Technique() = default;
+  virtual const TechniqueInfo& info() const = 0;
+  // Called every frame while the technique is active: adds its passes, each declaring the
+  // resources it reads and writes. Passes whose outputs nothing needs are culled.
+  virtual void setup(FrameGraph& frame) = 0;
+  // Technique-owned GPU memory outside the frame graph's pool (reported in stats).
+  virtual std::size_t ownedBytes() const { return 0; }
+};
+
+} // namespace rtlab

@@ -1,0 +1,103 @@
+#include "gl/shader_source.h"
+
+#include "util/error.h"
+#include "util/paths.h"
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace rtlab::gl {
+namespace fs = std::filesystem;
+namespace {
+
+[[noreturn]] void shaderError(const std::string& msg) { throw Error(ExitCode::Shader, msg); }
+
+std::string resolvePath(const std::string& name, const std::string& includer) {
+  if (fs::path(name).is_absolute()) return name;
+  if (!includer.empty()) {
+    fs::path local = fs::path(includer).parent_path() / name;
+    if (fs::exists(local)) return local.lexically_normal().string();
+  }
+  return fs::path(shaderPath(name)).lexically_normal().string();
+}
+
+struct Preprocessor {
+  std::vector<std::string> files;
+  std::vector<std::string> stack;
+  std::ostringstream out;
+
+  int fileIndex(const std::string& path) {
+    for (std::size_t i = 0; i < files.size(); ++i)
+      if (files[i] == path) return int(i);
+    files.push_back(path);
+    return int(files.size()) - 1;
+  }
+
+  void include(const std::string& path, const std::string& fromFile, int fromLine, bool isRoot,
+               const std::vector<std::string>& defines) {
+    for (const auto& s : stack)
+      if (s == path) shaderError(fromFile + ":" + std::to_string(fromLine) + ": #include cycle through '" + path + "'");
+    std::ifstream in(path);
+    if (!in) {
+      if (isRoot) shaderError("cannot read shader '" + path + "'");
+      shaderError(fromFile + ":" + std::to_string(fromLine) + ": cannot open included file '" + path + "'");
+    }
+    stack.push_back(path);
+    const int index = fileIndex(path);
+    static const std::regex includeRe(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
+    std::string line;
+    int lineNo = 0;
+    bool sawVersion = !isRoot;
+    if (!isRoot) out << "#line 1 " << index << "\n";
+    while (std::getline(in, line)) {
+      ++lineNo;
+      std::smatch m;
+      if (isRoot && !sawVersion) {
+        if (line.rfind("#version", 0) != 0) shaderError(path + ":" + std::to_string(lineNo) + ": the first line must be #version");
+        out << line << "\n";
+        for (const auto& d : defines) out << "#define " << d << "\n";
+        out << "#line " << lineNo + 1 << " " << index << "\n";
+        sawVersion = true;
+      } else if (std::regex_match(line, m, includeRe)) {
+        include(resolvePath(m[1].str(), path), path, lineNo, false, defines);
+        out << "#line " << lineNo + 1 << " " << index << "\n";
+      } else {
+        out << line << "\n";
+      }
+    }
+    if (isRoot && !sawVersion) shaderError(path + ":1: empty shader, expected #version");
+    stack.pop_back();
+  }
+};
+
+} // namespace
+
+ShaderSource loadShaderSource(const std::string& path, const std::vector<std::string>& defines) {
+  Preprocessor pp;
+  pp.include(resolvePath(path, ""), "", 0, true, defines);
+  return ShaderSource{pp.out.str(), pp.files};
+}
+
+std::string mapInfoLog(const std::string& log, const std::vector<std::string>& files) {
+  static const std::regex mesaRe(R"(^\s*(\d+):(\d+)\(\d+\):\s*(.*)$)");
+  static const std::regex nvRe(R"(^\s*(\d+)\((\d+)\)\s*:\s*(.*)$)");
+  std::istringstream in(log);
+  std::ostringstream out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::smatch m;
+    if (std::regex_match(line, m, mesaRe) || std::regex_match(line, m, nvRe)) {
+      const std::size_t file = std::stoul(m[1].str());
+      const std::string name = file < files.size() ? files[file] : "<source " + m[1].str() + ">";
+      out << name << ":" << m[2].str() << ": " << m[3].str() << "\n";
+    } else {
+      out << line << "\n";
+    }
+  }
+  return out.str();
+}
+
+} // namespace rtlab::gl

@@ -1,0 +1,18 @@
+// The scene's own parameters (CONTRACT.md "Keys and values"): light<N>.* for each light, only the
+// keys that apply to its type, and camera.position/target/fov. Defaults come from the scene.
+#pragma once
+#include "params/param_spec.h"
+#include "scene/scene.h"
+
+#include <vector>
+
+namespace rtlab {
+
+class ParamSet;
+
+std::vector<ParamSpec> sceneParamSpecs(const Scene& scene);
+// Writes the parameter values into the scene's lights and camera (directions normalized).
+// Throws Error(Usage) for a zero direction or a camera whose target equals its position.
+void applySceneParams(const ParamSet& params, Scene& scene);
+
+} // namespace rtlab

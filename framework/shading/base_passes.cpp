@@ -1,0 +1,202 @@
+#include "shading/base_passes.h"
+
+#include "frame/frame_graph.h"
+#include "frame/resource_pool.h"
+#include "frame/stages.h"
+#include "gl/program_cache.h"
+#include "params/param_set.h"
+#include "shading/gpu_common.h"
+#include "shading/scene_gpu.h"
+#include "util/error.h"
+
+#include <algorithm>
+
+namespace rtlab {
+
+gl::TextureDesc frameTexture(const FrameGraph& frame, GLenum format) {
+  gl::TextureDesc d;
+  d.format = format;
+  d.width = frame.width();
+  d.height = frame.height();
+  return d;
+}
+
+std::string aovResource(const std::string& aov) { return "aov." + aov; }
+
+void addGBufferPass(FrameGraph& frame) {
+  frame.addPass("gbuffer",
+      [&](PassBuilder& b) {
+        b.write(res::kPosition, frameTexture(frame, GL_RGBA32F));
+        b.write(res::kNormal, frameTexture(frame, GL_RGBA16F));
+        b.write(res::kGeometry, frameTexture(frame, GL_RGBA16F));
+        b.write(res::kAlbedo, frameTexture(frame, GL_RGBA8));
+        b.write(res::kMaterial, frameTexture(frame, GL_RGBA16F));
+        b.write(res::kDepth, frameTexture(frame, GL_DEPTH_COMPONENT32F));
+      },
+      [](PassContext& ctx) {
+        gl::Framebuffer fbo = makeFramebuffer("gbuffer",
+            {&ctx.texture(res::kPosition), &ctx.texture(res::kNormal), &ctx.texture(res::kGeometry),
+             &ctx.texture(res::kAlbedo), &ctx.texture(res::kMaterial)}, &ctx.texture(res::kDepth));
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+        glViewport(0, 0, ctx.view.width, ctx.view.height);
+        const float zero[4] = {0, 0, 0, 0};
+        for (int i = 0; i < 5; ++i) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, i, zero);
+        const float one = 1.0f;
+        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_CULL_FACE);
+        glDisable(GL_BLEND);
+        gl::Program& p = ctx.programs.get({{"shading/surface.vert", "shading/gbuffer.frag"}, {}, "gbuffer"});
+        p.set("uViewProj", ctx.view.viewProj)
+            .set("uCameraPosition", ctx.view.cameraPosition)
+            .set("uCameraForward", ctx.view.cameraForward);
+        ctx.sceneGpu.draw(p, SceneGpu::Filter::Opaque, true);
+        glDisable(GL_DEPTH_TEST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      });
+}
+
+void addLightingPass(FrameGraph& frame) {
+  frame.addPass("lighting",
+      [&](PassBuilder& b) {
+        for (const auto* r : {&res::kPosition, &res::kNormal, &res::kGeometry, &res::kAlbedo, &res::kMaterial}) b.read(*r);
+        b.readIfPresent("visibility");
+        b.readIfPresent("ao");
+        b.readIfPresent("indirect");
+        b.write(res::kColorHdr, frameTexture(frame, GL_RGBA16F));
+      },
+      [](PassContext& ctx) {
+        std::vector<std::string> defines;
+        const std::pair<const char*, const char*> optional[] = {
+            {"visibility", "HAS_VISIBILITY"}, {"ao", "HAS_AO"}, {"indirect", "HAS_INDIRECT"}};
+        for (const auto& [name, define] : optional)
+          if (ctx.has(name)) defines.push_back(define);
+        gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/lighting.frag"}, defines, "lighting"});
+        gl::Framebuffer fbo = makeFramebuffer("lighting", {&ctx.texture(res::kColorHdr)});
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+        glViewport(0, 0, ctx.view.width, ctx.view.height);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_BLEND);
+        glDisable(GL_CULL_FACE);
+        p.use();
+        int unit = 0;
+        auto bind = [&](const char* uniform, const std::string& resource) {
+          ctx.texture(resource).bind(GLuint(unit));
+          p.set(uniform, unit++);
+        };
+        bind("uPosition", res::kPosition);
+        bind("uNormal", res::kNormal);
+        bind("uGeometry", res::kGeometry);
+        bind("uAlbedo", res::kAlbedo);
+        bind("uMaterial", res::kMaterial);
+        if (ctx.has("visibility")) bind("uVisibility", "visibility");
+        if (ctx.has("ao")) bind("uAo", "ao");
+        if (ctx.has("indirect")) bind("uIndirect", "indirect");
+        p.set("uCameraPosition", ctx.view.cameraPosition)
+            .set("uAmbient", ctx.scene.ambient)
+            .set("uBackground", ctx.scene.background);
+        ctx.common.bindLights(p);
+        ctx.common.drawFullscreen();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      });
+}
+
+void addTransparentPass(FrameGraph& frame) {
+  frame.addPass("transparent",
+      [&](PassBuilder& b) {
+        b.read(res::kColorHdr);
+        b.read(res::kDepth);
+        b.write(res::kColorHdr, frameTexture(frame, GL_RGBA16F));
+      },
+      [](PassContext& ctx) {
+        gl::Framebuffer fbo = makeFramebuffer("transparent", {&ctx.texture(res::kColorHdr)}, &ctx.texture(res::kDepth));
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+        glViewport(0, 0, ctx.view.width, ctx.view.height);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_FALSE);
+        glDisable(GL_CULL_FACE);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        gl::Program& p = ctx.programs.get({{"shading/surface.vert", "shading/forward.frag"}, {}, "forward"});
+        p.set("uViewProj", ctx.view.viewProj)
+            .set("uCameraPosition", ctx.view.cameraPosition)
+            .set("uAmbient", ctx.scene.ambient);
+        ctx.common.bindLights(p);
+        ctx.sceneGpu.draw(p, SceneGpu::Filter::Transparent, true, ctx.view.cameraPosition);
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_DEPTH_TEST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      });
+}
+
+void addTonemapPass(FrameGraph& frame) {
+  frame.addPass("tonemap",
+      [&](PassBuilder& b) {
+        b.read(res::kColorHdr);
+        b.write(res::kColorLdr, frameTexture(frame, GL_RGBA16F));
+      },
+      [](PassContext& ctx) {
+        gl::Framebuffer fbo = makeFramebuffer("tonemap", {&ctx.texture(res::kColorLdr)});
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+        glViewport(0, 0, ctx.view.width, ctx.view.height);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_BLEND);
+        gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/tonemap.frag"}, {}, "tonemap"});
+        p.use();
+        ctx.texture(res::kColorHdr).bind(0);
+        p.set("uColor", 0)
+            .set("uExposure", ctx.params.getFloat("tonemap.exposure"))
+            .set("uOperator", ctx.params.getEnum("tonemap.operator"))
+            .set("uEncodeSrgb", false);
+        ctx.common.drawFullscreen();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      });
+}
+
+std::string addAovPass(FrameGraph& frame, const std::string& aov) {
+  const std::string out = aovResource(aov);
+  std::string source;      // resource the AOV copies, if any
+  std::string define;
+  float defaultValue = 0.0f;
+  if (aov == "color") { source = res::kColorHdr; define = "AOV_COLOR"; }
+  else if (aov == "depth") define = "AOV_DEPTH";
+  else if (aov == "normal") define = "AOV_NORMAL";
+  else if (aov == "albedo") define = "AOV_ALBEDO";
+  else if (aov == "visibility" || aov == "ao") { source = aov; defaultValue = 1.0f; }
+  else if (aov == "indirect") { source = aov; defaultValue = 0.0f; }
+  else throw Error(ExitCode::Internal, "no built-in AOV '" + aov + "'");
+  frame.addPass(out,
+      [&](PassBuilder& b) {
+        for (const auto* r : {&res::kPosition, &res::kNormal, &res::kGeometry, &res::kAlbedo}) b.read(*r);
+        if (!source.empty()) b.readIfPresent(source);
+        b.write(out, frameTexture(frame, GL_RGBA32F));
+      },
+      [=](PassContext& ctx) {
+        std::vector<std::string> defines;
+        if (!define.empty()) defines.push_back(define);
+        gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/aov.frag"}, defines, "aov"});
+        gl::Framebuffer fbo = makeFramebuffer(out, {&ctx.texture(out)});
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+        glViewport(0, 0, ctx.view.width, ctx.view.height);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_BLEND);
+        p.use();
+        ctx.texture(res::kPosition).bind(0);
+        ctx.texture(res::kNormal).bind(1);
+        ctx.texture(res::kGeometry).bind(2);
+        ctx.texture(res::kAlbedo).bind(3);
+        const bool hasSource = !source.empty() && ctx.has(source);
+        if (hasSource) ctx.texture(source).bind(4);
+        p.set("uPosition", 0).set("uNormal", 1).set("uGeometry", 2).set("uAlbedo", 3).set("uSource", 4)
+            .set("uHasSource", hasSource).set("uDefault", defaultValue);
+        ctx.common.drawFullscreen();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      });
+  return out;
+}
+
+} // namespace rtlab

@@ -1,0 +1,77 @@
+#include "shading/gpu_common.h"
+
+#include "gl/program.h"
+#include "util/error.h"
+
+#include <vector>
+
+namespace rtlab {
+namespace {
+
+struct GpuLight {
+  glm::vec4 positionType, directionRange, colorIntensity, spotCos, rectRight, rectUp;
+};
+
+float typeCode(LightType t) {
+  switch (t) {
+  case LightType::Directional: return 0.0f;
+  case LightType::Point: return 1.0f;
+  case LightType::Spot: return 2.0f;
+  case LightType::Rect: return 3.0f;
+  }
+  return 0.0f;
+}
+
+} // namespace
+
+void GpuCommon::uploadLights(const Scene& scene) {
+  std::vector<GpuLight> data;
+  for (const Light& l : scene.lights) {
+    GpuLight g;
+    g.positionType = glm::vec4(l.position, typeCode(l.type));
+    g.directionRange = glm::vec4(glm::normalize(l.direction), l.range);
+    g.colorIntensity = glm::vec4(l.color, l.intensity);
+    g.spotCos = glm::vec4(std::cos(l.innerConeAngle), std::cos(l.outerConeAngle), 0, 0);
+    g.rectRight = glm::vec4(l.right, l.width);
+    g.rectUp = glm::vec4(l.up, l.height);
+    data.push_back(g);
+  }
+  lights = gl::Buffer("lights");
+  const GLsizeiptr bytes = GLsizeiptr(data.size() * sizeof(GpuLight));
+  glNamedBufferStorage(lights.id(), bytes > 0 ? bytes : GLsizeiptr(sizeof(GpuLight)), data.empty() ? nullptr : data.data(), 0);
+  lightCount = int(data.size());
+}
+
+void GpuCommon::bindLights(gl::Program& program) const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, lights.id());
+  program.set("uLightCount", lightCount);
+}
+
+void GpuCommon::drawFullscreen() const {
+  glBindVertexArray(emptyVao.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+}
+
+gl::Framebuffer makeFramebuffer(const std::string& label, std::initializer_list<const gl::Texture*> colors,
+                                const gl::Texture* depth, int layer) {
+  gl::Framebuffer fbo(label);
+  std::vector<GLenum> drawBuffers;
+  GLenum attachment = GL_COLOR_ATTACHMENT0;
+  for (const gl::Texture* c : colors) {
+    glNamedFramebufferTexture(fbo.id(), attachment, c->id(), 0);
+    drawBuffers.push_back(attachment++);
+  }
+  if (depth) {
+    if (layer >= 0) glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, depth->id(), 0, layer);
+    else glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, depth->id(), 0);
+  }
+  if (drawBuffers.empty()) glNamedFramebufferDrawBuffer(fbo.id(), GL_NONE);
+  else glNamedFramebufferDrawBuffers(fbo.id(), GLsizei(drawBuffers.size()), drawBuffers.data());
+  const GLenum status = glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw Error(ExitCode::Internal, "framebuffer '" + label + "' is incomplete (status 0x" + std::to_string(status) + ")");
+  return fbo;
+}
+
+} // namespace rtlab

@@ -1,0 +1,32 @@
+// GPU objects every frame shares, owned by the renderer for the context's lifetime: the empty
+// vertex array for full-screen triangles and the light buffer (shaders/common/lights.glsl).
+#pragma once
+#include "gl/objects.h"
+#include "gl/program.h"
+#include "gl/texture.h"
+#include "scene/scene.h"
+
+#include <initializer_list>
+#include <string>
+
+namespace rtlab {
+
+struct GpuCommon {
+  gl::VertexArray emptyVao{"fullscreen"};
+  gl::Buffer lights;
+  int lightCount = 0;
+
+  // Uploads the scene's lights (re-created each call; a handful of vec4s).
+  void uploadLights(const Scene& scene);
+  // Binds the light buffer to binding 0 and sets uLightCount on the program.
+  void bindLights(gl::Program& program) const;
+  // Draws one full-screen triangle with the currently used program.
+  void drawFullscreen() const;
+};
+
+// A framebuffer over the given attachments (color attachment i = colors[i]); `layer` selects a
+// cube face for a cube depth texture. Throws Error(Internal) if GL reports it incomplete.
+gl::Framebuffer makeFramebuffer(const std::string& label, std::initializer_list<const gl::Texture*> colors,
+                                const gl::Texture* depth = nullptr, int layer = -1);
+
+} // namespace rtlab

@@ -1,0 +1,27 @@
+// The shadow stage's light-space depth map of light 0 (DESIGN.md: owned by the stage, shared by
+// every depth-comparison technique). Resource "shadow.depth": a 2D depth texture, or a cube map
+// for point lights and wide spots, with hardware depth comparison enabled.
+#pragma once
+#include "shading/light_space.h"
+
+#include <string>
+
+namespace rtlab {
+
+class FrameGraph;
+class ParamSet;
+struct PassContext;
+namespace gl { class Program; }
+
+inline const std::string kShadowDepth = "shadow.depth";
+
+// The light space every shadow technique uses this frame (shadow.* params, light 0, bounds).
+LightSpace shadowLightSpace(const Scene& scene, const ParamSet& params);
+// Adds the "shadow.depth" pass (once per frame; later calls do nothing).
+void addShadowDepthPass(FrameGraph& frame);
+// Sets the uniforms of shaders/common/shadow_space.glsl and binds the map to `unit`.
+void bindShadowSpace(PassContext& ctx, gl::Program& program, int unit);
+// "SHADOW_PROJECTION <n>" define for shadow_space.glsl.
+std::string shadowProjectionDefine(const LightSpace& ls);
+
+} // namespace rtlab

@@ -1,0 +1,49 @@
+// Scene lights in a shader storage buffer (binding 0), filled by shading/light_buffer.cpp.
+// Units follow glTF: directional lux, point/spot candela, rectangular nits.
+const int kLightDirectional = 0;
+const int kLightPoint = 1;
+const int kLightSpot = 2;
+const int kLightRect = 3;
+
+struct GpuLight {
+  vec4 positionType;    // xyz position, w type
+  vec4 directionRange;  // xyz direction light travels, w range (0 = infinite)
+  vec4 colorIntensity;  // rgb color, w intensity
+  vec4 spotCos;         // x cos(inner), y cos(outer)
+  vec4 rectRight;       // xyz right axis, w width
+  vec4 rectUp;          // xyz up axis, w height
+};
+
+layout(std430, binding = 0) readonly buffer LightBuffer {
+  GpuLight uLights[];
+};
+uniform int uLightCount;
+
+// Irradiance arriving at p from light i (on a surface facing it), and the direction toward it.
+// Rectangular lights are approximated as a point at their center with intensity
+// radiance * area * cos(emission angle); the LTC technique replaces this approximation.
+vec3 lightIrradiance(int i, vec3 p, out vec3 toLight) {
+  GpuLight light = uLights[i];
+  int type = int(light.positionType.w);
+  vec3 radiant = light.colorIntensity.rgb * light.colorIntensity.w;
+  if (type == kLightDirectional) {
+    toLight = -light.directionRange.xyz;
+    return radiant;
+  }
+  vec3 d = light.positionType.xyz - p;
+  float dist2 = max(dot(d, d), 1e-8);
+  toLight = d * inversesqrt(dist2);
+  float attenuation = 1.0 / dist2;
+  float range = light.directionRange.w;
+  if (range > 0.0) {
+    float r = sqrt(dist2) / range;
+    attenuation *= clamp(1.0 - r * r * r * r, 0.0, 1.0) * clamp(1.0 - r * r * r * r, 0.0, 1.0);
+  }
+  float cosEmit = dot(-toLight, light.directionRange.xyz);
+  if (type == kLightSpot) {
+    attenuation *= smoothstep(light.spotCos.y, light.spotCos.x, cosEmit);
+  } else if (type == kLightRect) {
+    attenuation *= max(cosEmit, 0.0) * light.rectRight.w * light.rectUp.w;
+  }
+  return radiant * attenuation;
+}

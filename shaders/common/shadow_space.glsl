@@ -1,0 +1,73 @@
+// Light-space lookups into the shadow stage's depth map ("shadow.depth"), shared by every
+// depth-comparison technique. Needs SHADOW_PROJECTION: 0 orthographic, 1 perspective, 2 cube.
+// Uniforms are set by bindShadowSpace() (framework/shading/shadow_depth.cpp).
+uniform mat4 uLightViewProj;
+uniform vec3 uLightPosition;
+uniform vec3 uLightDirection;
+uniform float uLightNear;
+uniform float uLightFar;
+uniform float uTexelScale;
+uniform float uNormalBias;    // shadow-map texels
+uniform float uConstantBias;  // depth units of the map, [0,1]
+#if SHADOW_PROJECTION == 2
+uniform samplerCubeShadow uShadowMap;
+#else
+uniform sampler2DShadow uShadowMap;
+#endif
+
+// World size of one map texel at p.
+float shadowTexelWorld(vec3 p) {
+#if SHADOW_PROJECTION == 0
+  return uTexelScale;
+#elif SHADOW_PROJECTION == 1
+  return uTexelScale * max(dot(p - uLightPosition, uLightDirection), 0.0);
+#else
+  vec3 v = abs(p - uLightPosition);
+  return uTexelScale * max(v.x, max(v.y, v.z));
+#endif
+}
+
+// The receiver point after the normal offset (Holbein 2011's "normal offset shadows").
+vec3 shadowReceiver(vec3 p, vec3 geometricNormal) {
+  return p + geometricNormal * (uNormalBias * shadowTexelWorld(p));
+}
+
+// Perspective depth in [0,1] of a point at axis distance z (cube faces).
+float shadowPerspectiveDepth(float z) {
+  float n = uLightNear, f = uLightFar;
+  float ndc = (f + n) / (f - n) - 2.0 * f * n / ((f - n) * z);
+  return ndc * 0.5 + 0.5;
+}
+
+#if SHADOW_PROJECTION == 2
+// Cube lookup vector and reference depth; returns false outside [near, far] (treated as lit).
+bool shadowCoordCube(vec3 q, out vec3 dir, out float depth) {
+  dir = q - uLightPosition;
+  vec3 a = abs(dir);
+  float z = max(a.x, max(a.y, a.z));
+  depth = shadowPerspectiveDepth(z);
+  return z > uLightNear && depth <= 1.0;
+}
+#else
+// Map coordinates (uv, depth in [0,1]); returns false outside the light frustum (treated as lit).
+bool shadowCoord2D(vec3 q, out vec3 coord) {
+  vec4 c = uLightViewProj * vec4(q, 1.0);
+  if (c.w <= 0.0) return false;
+  coord = c.xyz / c.w * 0.5 + 0.5;
+  return all(greaterThanEqual(coord, vec3(0.0))) && all(lessThanEqual(coord, vec3(1.0)));
+}
+#endif
+
+// Binary visibility of light 0 at receiver q (already offset): 1 lit, 0 shadowed.
+float shadowTestHard(vec3 q) {
+#if SHADOW_PROJECTION == 2
+  vec3 dir;
+  float depth;
+  if (!shadowCoordCube(q, dir, depth)) return 1.0;
+  return texture(uShadowMap, vec4(dir, depth - uConstantBias));
+#else
+  vec3 coord;
+  if (!shadowCoord2D(q, coord)) return 1.0;
+  return texture(uShadowMap, vec3(coord.xy, coord.z - uConstantBias));
+#endif
+}

@@ -1,0 +1,7 @@
+#version 450 core
+// Depth-only rendering for light-space maps.
+layout(location = 0) in vec3 aPosition;
+uniform mat4 uModel;
+uniform mat4 uViewProj;
+
+void main() { gl_Position = uViewProj * uModel * vec4(aPosition, 1.0); }

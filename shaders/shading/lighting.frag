@@ -1,0 +1,67 @@
+#version 450 core
+// Deferred direct lighting of every light from the G-buffer, plus emissive and a constant
+// ambient term scaled by the ao stage's output and the material occlusion, plus the indirect
+// stage's irradiance. Light 0 is scaled by the shadow stage's visibility; the others are
+// unshadowed.
+#include "../common/brdf.glsl"
+#include "../common/lights.glsl"
+
+in vec2 vUv;
+
+uniform sampler2D uPosition;
+uniform sampler2D uNormal;
+uniform sampler2D uGeometry;
+uniform sampler2D uAlbedo;
+uniform sampler2D uMaterial;
+#ifdef HAS_VISIBILITY
+uniform sampler2D uVisibility;
+#endif
+#ifdef HAS_AO
+uniform sampler2D uAo;
+#endif
+#ifdef HAS_INDIRECT
+uniform sampler2D uIndirect;
+#endif
+uniform vec3 uCameraPosition;
+uniform vec3 uAmbient;
+uniform vec3 uBackground;
+
+layout(location = 0) out vec4 oColor;
+
+void main() {
+  ivec2 px = ivec2(gl_FragCoord.xy);
+  vec4 geometry = texelFetch(uGeometry, px, 0);
+  if (geometry.w < 0.5) {
+    oColor = vec4(uBackground, 0.0);
+    return;
+  }
+  vec3 p = texelFetch(uPosition, px, 0).xyz;
+  vec4 normalOcc = texelFetch(uNormal, px, 0);
+  vec4 albedoMetal = texelFetch(uAlbedo, px, 0);
+  vec4 emissiveRough = texelFetch(uMaterial, px, 0);
+  vec3 n = normalize(normalOcc.xyz);
+  vec3 v = normalize(uCameraPosition - p);
+  vec3 baseColor = albedoMetal.rgb;
+  float metallic = albedoMetal.a;
+  float roughness = emissiveRough.a;
+
+  vec3 color = emissiveRough.rgb;
+  for (int i = 0; i < uLightCount; ++i) {
+    vec3 l;
+    vec3 e = lightIrradiance(i, p, l);
+#ifdef HAS_VISIBILITY
+    if (i == 0) e *= texelFetch(uVisibility, px, 0).r;
+#endif
+    color += evaluateBrdfCos(n, v, l, baseColor, metallic, roughness) * e;
+  }
+  float occlusion = normalOcc.w;
+#ifdef HAS_AO
+  occlusion *= texelFetch(uAo, px, 0).r;
+#endif
+  vec3 diffuseAlbedo = baseColor * (1.0 - metallic);
+  color += uAmbient * diffuseAlbedo * occlusion;
+#ifdef HAS_INDIRECT
+  color += texelFetch(uIndirect, px, 0).rgb * diffuseAlbedo * kInvPi;
+#endif
+  oColor = vec4(color, 1.0);
+}

@@ -1,0 +1,94 @@
+// Shadow map — Williams 1978, "Casting curved shadows on curved surfaces".
+// Approximates the visibility of light 0 by one depth comparison against the shadow stage's
+// light-space depth map: binary, with the stage's constant, slope and normal-offset biases.
+// It has no parameters of its own: resolution, format and biases are the shadow stage's
+// (shadow.*), shared with every depth-comparison technique.
+#include "frame/frame_graph.h"
+#include "frame/registry.h"
+#include "gl/program_cache.h"
+#include "shading/base_passes.h"
+#include "shading/gpu_common.h"
+#include "shading/shadow_depth.h"
+
+namespace rtlab {
+namespace {
+
+class ShadowMap final : public Technique {
+public:
+  static TechniqueInfo staticInfo() {
+    TechniqueInfo info;
+    info.id = "shadow_map";
+    info.stage = "shadow";
+    info.title = "Shadow map (Williams 1978)";
+    info.summary = "Binary visibility of light 0 from one depth comparison against the light-space depth map";
+    info.debugViews = {{"shadow_map.light_depth", 1, "light-space depth map of light 0, raw [0,1] (cube maps unwrapped)"}};
+    return info;
+  }
+  const TechniqueInfo& info() const override { return m_info; }
+
+  void setup(FrameGraph& frame) override {
+    addShadowDepthPass(frame);
+    const std::string projection = shadowProjectionDefine(shadowLightSpace(frame.scene(), frame.params()));
+    frame.addPass("shadow_map.visibility",
+        [&](PassBuilder& b) {
+          b.read(kShadowDepth);
+          b.read(res::kPosition);
+          b.read(res::kGeometry);
+          b.write("visibility", frameTexture(frame, GL_R16F));
+        },
+        [projection](PassContext& ctx) {
+          gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shadow_map/visibility.frag"}, {projection}, "shadow_map.visibility"});
+          gl::Framebuffer fbo = makeFramebuffer("shadow_map.visibility", {&ctx.texture("visibility")});
+          glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+          glViewport(0, 0, ctx.view.width, ctx.view.height);
+          glDisable(GL_DEPTH_TEST);
+          glDisable(GL_BLEND);
+          p.use();
+          ctx.texture(res::kPosition).bind(0);
+          ctx.texture(res::kGeometry).bind(1);
+          p.set("uPosition", 0).set("uGeometry", 1);
+          bindShadowSpace(ctx, p, 2);
+          ctx.common.drawFullscreen();
+          glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+    frame.addPass("shadow_map.light_depth",
+        [&](PassBuilder& b) {
+          b.read(kShadowDepth);
+          b.write(aovResource("shadow_map.light_depth"), frameTexture(frame, GL_RGBA32F));
+        },
+        [this, projection](PassContext& ctx) {
+          gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shadow_map/light_depth.frag"}, {projection}, "shadow_map.light_depth"});
+          const std::string out = aovResource("shadow_map.light_depth");
+          gl::Framebuffer fbo = makeFramebuffer(out, {&ctx.texture(out)});
+          glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+          glViewport(0, 0, ctx.view.width, ctx.view.height);
+          glDisable(GL_DEPTH_TEST);
+          glDisable(GL_BLEND);
+          if (!m_rawDepth) {
+            m_rawDepth = gl::Sampler("shadow_map.raw-depth");
+            glSamplerParameteri(m_rawDepth.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+            glSamplerParameteri(m_rawDepth.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glSamplerParameteri(m_rawDepth.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            glSamplerParameteri(m_rawDepth.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+            glSamplerParameteri(m_rawDepth.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+          }
+          p.use();
+          ctx.texture(kShadowDepth).bind(0);
+          glBindSampler(0, m_rawDepth.id());
+          p.set("uDepth", 0);
+          ctx.common.drawFullscreen();
+          glBindSampler(0, 0);
+          glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+  }
+
+private:
+  TechniqueInfo m_info = staticInfo();
+  gl::Sampler m_rawDepth;
+};
+
+} // namespace
+
+void registerTechnique_shadow_map(TechniqueRegistry& registry) { registerTechniqueType<ShadowMap>(registry); }
+
+} // namespace rtlab

@@ -1,0 +1,40 @@
+// One headless GL context for the whole render-test binary (programs cost 0.1-0.4 s each to JIT
+// on llvmpipe, so they are shared through one Renderer per scene set-up where possible).
+#pragma once
+#include "frame/renderer.h"
+#include "params/param_set.h"
+#include "platform/context.h"
+#include "scene/scene.h"
+
+#include <string>
+#include <vector>
+
+namespace rtlab {
+
+Context& testContext();
+
+// A scene, its parameters and techniques, rendered in the shared context.
+struct TestFrame {
+  Scene scene;
+  ParamSet params;
+  std::vector<std::string> techniques;
+  int width = 128, height = 128;
+};
+
+// Resolves like the command line: scene name or file, techniques (comma list), KEY=VALUE sets.
+TestFrame makeTestFrame(const std::string& scene, const std::string& techniques = "",
+                        const std::vector<std::string>& sets = {}, int width = 128, int height = 128);
+
+// Renders one frame of the AOVs (and optionally display color), returns the stats of that frame.
+struct TestRender {
+  std::unique_ptr<Renderer> renderer;
+  FrameStats stats;
+  int glErrors = 0;
+};
+TestRender renderTestFrame(const TestFrame& frame, const std::vector<std::string>& aovs, bool displayColor = false,
+                           int frames = 1);
+
+// Pixel of a world point in a top-to-bottom image of the frame's camera, or false if off-screen.
+bool projectToPixel(const TestFrame& frame, const glm::vec3& world, int& x, int& y);
+
+} // namespace rtlab

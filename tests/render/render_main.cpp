@@ -1,0 +1,82 @@
+// The render-test binary's main: creates the shared headless context before any test runs.
+#include "render_fixture.h"
+
+#include "frame/param_catalog.h"
+#include "frame/registry.h"
+#include "frame/selection.h"
+#include "frame/frame_view.h"
+#include "gl/debug.h"
+#include "scene/load.h"
+#include "scene/scene_params.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <memory>
+
+namespace rtlab {
+namespace {
+std::unique_ptr<Context> g_context;
+} // namespace
+
+Context& testContext() { return *g_context; }
+
+TestFrame makeTestFrame(const std::string& scene, const std::string& techniques, const std::vector<std::string>& sets,
+                        int width, int height) {
+  TestFrame f;
+  f.scene = loadScene(scene);
+  f.params = makeParamSet(f.scene, TechniqueRegistry::instance());
+  TechniqueSelection sel(TechniqueRegistry::instance());
+  if (!techniques.empty()) sel.activateList(techniques);
+  f.techniques = sel.ordered();
+  for (const auto& s : sets) f.params.setAssignment(s);
+  applySceneParams(f.params, f.scene);
+  f.width = width;
+  f.height = height;
+  return f;
+}
+
+TestRender renderTestFrame(const TestFrame& frame, const std::vector<std::string>& aovs, bool displayColor, int frames) {
+  TestRender r;
+  r.renderer = std::make_unique<Renderer>(TechniqueRegistry::instance());
+  r.renderer->setScene(frame.scene);
+  r.renderer->setTechniques(frame.techniques);
+  drainGlErrors();
+  PassTimer timer(TimingMethod::CpuFinish);
+  FrameOutputs outputs{aovs, displayColor};
+  for (int i = 0; i < frames; ++i) {
+    r.renderer->render(frame.params, frame.width, frame.height, outputs, timer);
+    const int errors = drainGlErrors();
+    r.glErrors += errors;
+    r.stats.addFrame(timer, errors);
+  }
+  r.stats.setResources(r.renderer->resources());
+  return r;
+}
+
+bool projectToPixel(const TestFrame& frame, const glm::vec3& world, int& x, int& y) {
+  const FrameView view = makeFrameView(frame.scene.camera, frame.width, frame.height);
+  const glm::vec4 clip = view.viewProj * glm::vec4(world, 1.0f);
+  if (clip.w <= 0.0f) return false;
+  const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+  x = int((ndc.x * 0.5f + 0.5f) * float(frame.width));
+  y = frame.height - 1 - int((ndc.y * 0.5f + 0.5f) * float(frame.height));
+  return x >= 0 && x < frame.width && y >= 0 && y < frame.height;
+}
+
+} // namespace rtlab
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  try {
+    rtlab::g_context = rtlab::createHeadlessContext(rtlab::Backend::Auto);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "render tests need a GL 4.5 context: %s\n", e.what());
+    return 1;
+  }
+  std::printf("render tests on %s (%s)\n", rtlab::g_context->info().renderer.c_str(),
+              rtlab::g_context->backendName().c_str());
+  const int rc = RUN_ALL_TESTS();
+  rtlab::g_context.reset();
+  return rc;
+}
