@@ -70,18 +70,18 @@ protected:
   std::string writeJson(const std::string& name, const nlohmann::json& j) const { return write(name, j.dump()); }
 
   // Runs `rtlab render ... --out <dir>/out/x.png` and checks the contract for a failure.
-  void expectFailure(std::vector<std::string> args, int code, const std::string& mention = "") {
-    args.insert(args.begin(), "render");
-    for (const char* a : {"--size", "32x32", "--out"}) args.push_back(a);
-    const std::string out = (m_dir / "out" / "x.png").string();
-    if (std::find(args.begin(), args.end(), std::string("--out")) != args.end() - 1) args.pop_back();
-    else args.push_back(out);
+  void expectFailure(const std::vector<std::string>& testArgs, int code, const std::string& mention = "") {
+    // Defaults first: for options given twice the last wins, so the test's own values count.
+    std::vector<std::string> args = {"render", "--size", "32x32", "--out", (m_dir / "out" / "x.png").string()};
+    args.insert(args.end(), testArgs.begin(), testArgs.end());
     const auto r = runProcess(RTLAB_BINARY, args, 60);
     EXPECT_FALSE(r.timedOut);
     EXPECT_EQ(r.exitCode, code) << r.err;
     EXPECT_EQ(rtlab::test::lineCount(r.err), 1) << r.err;
     EXPECT_EQ(r.err.rfind("rtlab: error:", 0), 0u) << r.err;
-    if (!mention.empty()) EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
+    if (!mention.empty()) {
+      EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
+    }
     EXPECT_TRUE(fs::is_empty(m_dir / "out")) << "output left behind";
   }
 

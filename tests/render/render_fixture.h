@@ -27,12 +27,16 @@ TestFrame makeTestFrame(const std::string& scene, const std::string& techniques 
 
 // Renders one frame of the AOVs (and optionally display color), returns the stats of that frame.
 struct TestRender {
-  std::unique_ptr<Renderer> renderer;
+  Renderer* renderer = nullptr; // shared per scene name, owned by the fixture
   FrameStats stats;
   int glErrors = 0;
 };
 TestRender renderTestFrame(const TestFrame& frame, const std::vector<std::string>& aovs, bool displayColor = false,
                            int frames = 1);
+
+// Renders with the shared renderer of the frame's scene name: the scene is uploaded once per name.
+// Destroys the shared renderers (before the context goes).
+void releaseTestRenderers();
 
 // Pixel of a world point in a top-to-bottom image of the frame's camera, or false if off-screen.
 bool projectToPixel(const TestFrame& frame, const glm::vec3& world, int& x, int& y);

@@ -12,12 +12,16 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <map>
 #include <memory>
 
 namespace rtlab {
 namespace {
 std::unique_ptr<Context> g_context;
+std::map<std::string, std::unique_ptr<Renderer>> g_renderers;
 } // namespace
+
+void releaseTestRenderers() { g_renderers.clear(); }
 
 Context& testContext() { return *g_context; }
 
@@ -37,9 +41,14 @@ TestFrame makeTestFrame(const std::string& scene, const std::string& techniques,
 }
 
 TestRender renderTestFrame(const TestFrame& frame, const std::vector<std::string>& aovs, bool displayColor, int frames) {
+  // One renderer per scene for the whole binary: its program cache saves the shader JIT time.
+  auto& renderer = g_renderers[frame.scene.name];
+  if (!renderer) {
+    renderer = std::make_unique<Renderer>(TechniqueRegistry::instance());
+    renderer->setScene(frame.scene);
+  }
   TestRender r;
-  r.renderer = std::make_unique<Renderer>(TechniqueRegistry::instance());
-  r.renderer->setScene(frame.scene);
+  r.renderer = renderer.get();
   r.renderer->setTechniques(frame.techniques);
   drainGlErrors();
   PassTimer timer(TimingMethod::CpuFinish);
@@ -77,6 +86,7 @@ int main(int argc, char** argv) {
   std::printf("render tests on %s (%s)\n", rtlab::g_context->info().renderer.c_str(),
               rtlab::g_context->backendName().c_str());
   const int rc = RUN_ALL_TESTS();
+  rtlab::releaseTestRenderers();
   rtlab::g_context.reset();
   return rc;
 }

@@ -221,8 +221,8 @@ TEST(SceneGltf, StripsFansMatricesAndSkippedLines) {
 
 TEST(SceneGltf, NormalizedByteTexcoordsAndOrthographicCameraIgnored) {
   GltfWriter w;
-  const std::uint8_t uv[8] = {0, 255, 255, 255, 255, 0, 0, 0};
-  int uvAccessor = w.addAccessor(w.addView(uv, 8, 4), 5121, "VEC2", 4, 0, true);
+  const std::uint8_t uv[16] = {0, 255, 9, 9, 255, 255, 9, 9, 255, 0, 9, 9, 0, 0, 9, 9}; // stride 4
+  int uvAccessor = w.addAccessor(w.addView(uv, 16, 4), 5121, "VEC2", 4, 0, true);
   int pos = w.addFloats({-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, "VEC3", 3);
   Json prim = {{"attributes", {{"POSITION", pos}, {"TEXCOORD_0", uvAccessor}}}, {"indices", w.addIndices({0, 1, 2, 0, 2, 3})}};
   w.push("meshes", {{"primitives", {prim}}});

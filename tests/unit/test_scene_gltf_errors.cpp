@@ -117,9 +117,9 @@ TEST(SceneGltfErrors, AccessorAndBufferViewBounds) {
 }
 
 TEST(SceneGltfErrors, AttributeTypes) {
-  expectInputError(quadFile("postype", [](GltfWriter& w) { w.doc["accessors"][0]["type"] = "VEC4"; }),
+  expectInputError(quadFile("postype", [](GltfWriter& w) { w.doc["accessors"][0]["type"] = "VEC2"; }),
                    "POSITION");
-  expectInputError(quadFile("idxtype", [](GltfWriter& w) { w.doc["accessors"][3]["componentType"] = 5126; }),
+  expectInputError(quadFile("idxtype", [](GltfWriter& w) { w.doc["accessors"][3]["componentType"] = 5120; }),
                    "indices");
   expectInputError(quadFile("nopos", [](GltfWriter& w) { w.doc["meshes"][0]["primitives"][0]["attributes"].erase("POSITION"); }),
                    "no POSITION");
