@@ -1,15 +1,14 @@
 // rtlab render: one frame (or --frames N measured frames) headless, one AOV to an image, stats.
 #include "app/commands.h"
 #include "app/frame_options.h"
+#include "app/measure.h"
 #include "app/run_info.h"
 #include "frame/aovs.h"
 #include "frame/registry.h"
 #include "frame/renderer.h"
-#include "gl/debug.h"
 #include "image/image.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
-#include "util/log.h"
 
 #include <cstdio>
 #include <iostream>
@@ -23,13 +22,6 @@ std::vector<OptionSpec> renderOptions() {
   specs.push_back({"--out", "", true, "FILE", "output image .png/.exr/.pfm (default <scene>_<aov>.png)"});
   specs.push_back({"--stats", "", true, "FILE.json", "write timings, resources and resolved parameters"});
   return specs;
-}
-
-PngEncoding pngEncodingFor(const std::string& aov) {
-  if (aov == "color") return PngEncoding::Srgb;
-  if (aov == "normal") return PngEncoding::Normal;
-  if (aov == "depth") return PngEncoding::NormalizeRange;
-  return PngEncoding::Linear01;
 }
 
 } // namespace
@@ -58,26 +50,14 @@ int runRender(int argc, char** argv) {
   const TimingMethod timing = resolveTiming(frame.options.timing, context->info().software);
   Renderer renderer(registry);
   renderer.setScene(frame.scene);
-  renderer.setTechniques(frame.techniques);
-  drainGlErrors(); // set-up errors are not a frame's
-
   const bool display = aov == "color" && format == ImageFormat::Png;
   FrameOutputs outputs;
   if (!display) outputs.aovs = {aov};
   outputs.displayColor = display;
-  PassTimer timer(timing);
-  FrameStats stats;
-  const int warmup = frame.options.frames > 1 ? 2 : 0;
-  for (int i = 0; i < warmup + frame.options.frames; ++i) {
-    renderer.render(frame.params, frame.options.width, frame.options.height, outputs, timer);
-    const int errors = drainGlErrors();
-    if (i >= warmup) stats.addFrame(timer, errors);
-  }
-  stats.setResources(renderer.resources());
-  if (stats.glErrors() > 0) logWarn(std::to_string(stats.glErrors()) + " GL errors during the measured frames");
+  const FrameStats stats = renderMeasured(renderer, frame, outputs, timing);
 
   Image image = display ? renderer.readDisplayColor() : renderer.readAov(aov);
-  writeImage(out, image, pngEncodingFor(aov));
+  writeImage(out, image, pngEncodingForAov(aov));
   if (!statsPath.empty()) writeTextAtomically(statsPath, statsJson(frame, *context, timing, stats).dump(2) + "\n");
   saveRequestedPreset(frame);
   return 0;

@@ -6,5 +6,6 @@ namespace rtlab {
 int runList(int argc, char** argv);
 int runRender(int argc, char** argv);
 int runView(int argc, char** argv);
+int runShowcase(int argc, char** argv);
 
 } // namespace rtlab

@@ -76,6 +76,20 @@ ResolvedFrame resolveFrame(const Args& args) {
   return f;
 }
 
+ResolvedFrame makeResolvedFrame(const std::string& sceneSpec, const std::string& techniques,
+                                const FrameOptions& options) {
+  ResolvedFrame f;
+  f.options = options;
+  f.options.sceneSpec = sceneSpec;
+  f.scene = loadScene(sceneSpec);
+  f.params = makeParamSet(f.scene, TechniqueRegistry::instance());
+  TechniqueSelection selection(TechniqueRegistry::instance());
+  if (!techniques.empty()) selection.activateList(techniques);
+  f.techniques = selection.ordered();
+  applySceneParams(f.params, f.scene);
+  return f;
+}
+
 void saveRequestedPreset(const ResolvedFrame& frame) {
   if (frame.options.savePreset.empty()) return;
   savePreset(frame.options.savePreset, frame.options.sceneSpec, frame.techniques, frame.params);

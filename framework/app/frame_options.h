@@ -37,6 +37,11 @@ struct ResolvedFrame {
 // command-line order after the preset. Errors: Usage (2) or Input (3).
 ResolvedFrame resolveFrame(const Args& args);
 
+// A frame of a scene with techniques (comma list, as -t) and default parameters, for commands
+// and tests that set frames up in code.
+ResolvedFrame makeResolvedFrame(const std::string& sceneSpec, const std::string& techniques,
+                                const FrameOptions& options = {});
+
 // "640x360" -> width, height in 1..8192; Error(Usage) otherwise.
 void parseSize(const std::string& text, int& width, int& height);
 

@@ -29,6 +29,7 @@ const char* kUsage =
     "  list       stages, techniques, parameters, scenes and AOVs (--json for scripts)\n"
     "  render     render headless to an image, with --stats timings\n"
     "  view       show the frame in a window\n"
+    "  showcase   render every scene and technique, with stats, into a folder with index.html\n"
     "  --version  version and git commit\n\n"
     "'rtlab <command> --help' describes a command's options.\n";
 
@@ -55,7 +56,8 @@ int main(int argc, char** argv) {
     if (command == "list") return runList(argc, argv);
     if (command == "render") return runRender(argc, argv);
     if (command == "view") return runView(argc, argv);
-    usageError("unknown command '" + command + "' (commands: list, render, view; see 'rtlab --help')");
+    if (command == "showcase") return runShowcase(argc, argv);
+    usageError("unknown command '" + command + "' (commands: list, render, view, showcase; see 'rtlab --help')");
   } catch (const Error& e) {
     std::fprintf(stderr, "rtlab: error: %s\n", e.what());
     return int(e.code());

@@ -37,4 +37,11 @@ int aovChannels(const std::string& aov, const TechniqueRegistry& registry) {
   throw Error(ExitCode::Internal, "unknown AOV '" + aov + "'");
 }
 
+PngEncoding pngEncodingForAov(const std::string& aov) {
+  if (aov == "color") return PngEncoding::Srgb;
+  if (aov == "normal") return PngEncoding::Normal;
+  if (aov == "depth") return PngEncoding::NormalizeRange;
+  return PngEncoding::Linear01;
+}
+
 } // namespace rtlab

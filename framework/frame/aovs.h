@@ -1,5 +1,7 @@
 // AOV names a frame can output: the built-in ones and the active techniques' debug views.
 #pragma once
+#include "image/image.h"
+
 #include <string>
 #include <vector>
 
@@ -13,5 +15,9 @@ void checkAovName(const std::string& aov, const std::vector<std::string>& active
 bool isBuiltinAov(const std::string& aov);
 // Channels of a known AOV (1 or 3); Error(Internal) if unknown.
 int aovChannels(const std::string& aov, const TechniqueRegistry& registry);
+
+// How an AOV is written to PNG (CONTRACT.md): color sRGB, normal n*0.5+0.5, depth normalized
+// to the visible range, everything else linear in [0,1].
+PngEncoding pngEncodingForAov(const std::string& aov);
 
 } // namespace rtlab

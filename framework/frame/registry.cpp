@@ -3,10 +3,22 @@
 #include "frame/stages.h"
 #include "util/error.h"
 
+#include <algorithm>
+
 namespace rtlab {
 
 void TechniqueRegistry::add(TechniqueEntry entry) {
   const auto& info = entry.info;
+  // Ids are CLI tokens (-t a,b) and key prefixes: lower-case [a-z0-9_], and none of the words or
+  // prefixes the frame owns ("none" deactivates all; stage ids, tonemap, camera, light<N> are keys).
+  const bool wellFormed = !info.id.empty() && std::all_of(info.id.begin(), info.id.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+  });
+  if (!wellFormed) throw Error(ExitCode::Internal, "technique id '" + info.id + "' must be non-empty [a-z0-9_]");
+  const bool lightPrefix = info.id.rfind("light", 0) == 0 && info.id.size() > 5 &&
+                           std::all_of(info.id.begin() + 5, info.id.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (info.id == "none" || info.id == "tonemap" || info.id == "camera" || findStage(info.id) || lightPrefix)
+    throw Error(ExitCode::Internal, "technique id '" + info.id + "' is reserved");
   if (find(info.id)) throw Error(ExitCode::Internal, "technique '" + info.id + "' registered twice");
   if (!findStage(info.stage))
     throw Error(ExitCode::Internal, "technique '" + info.id + "' names unknown stage '" + info.stage + "'");
@@ -28,8 +40,8 @@ const TechniqueEntry* TechniqueRegistry::find(const std::string& id) const {
 const TechniqueEntry& TechniqueRegistry::get(const std::string& id) const {
   if (const auto* e = find(id)) return *e;
   std::string known;
-  for (const auto& e : m_entries) known += (known.empty() ? "" : ", ") + e.info.id;
-  usageError("unknown technique '" + id + "' (known: " + known + ", none)");
+  for (const auto& e : m_entries) known += e.info.id + ", ";
+  usageError("unknown technique '" + id + "' (known: " + known + "none)");
 }
 
 } // namespace rtlab

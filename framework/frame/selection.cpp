@@ -28,6 +28,8 @@ void TechniqueSelection::activate(const std::string& id) {
 
 void TechniqueSelection::activateList(const std::string& list) {
   if (list.empty()) usageError("empty technique list after -t");
+  // getline yields no token after a trailing comma, so "a,b," would pass silently without this.
+  if (list.back() == ',') usageError("empty technique name in '" + list + "'");
   std::stringstream ss(list);
   std::string id;
   while (std::getline(ss, id, ',')) {

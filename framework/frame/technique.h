@@ -21,6 +21,7 @@ struct TechniqueInfo {
   std::string stage;  // "shadow"
   std::string title;  // "Shadow map (Williams 1978)"
   std::string summary;
+  std::string showcaseScene = "contact"; // built-in scene that shows it best (showcase, tests)
   std::vector<ParamSpec> params;  // keys "<id>.<name>"
   std::vector<DebugView> debugViews;
 };

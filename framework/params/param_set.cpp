@@ -28,7 +28,14 @@ void ParamSet::declare(const ParamSpec& spec) {
   if (has(spec.key)) throw Error(ExitCode::Internal, "parameter '" + spec.key + "' declared twice");
   if (spec.type == ParamType::Enum && spec.choices.empty())
     throw Error(ExitCode::Internal, "enum parameter '" + spec.key + "' has no choices");
-  checkParamRange(spec, spec.def); // a default outside its own range is a programming error
+  if (!(spec.min <= spec.max))
+    throw Error(ExitCode::Internal, "parameter '" + spec.key + "' has min > max (" + describeRange(spec) + ")");
+  try {
+    checkParamRange(spec, spec.def);
+  } catch (const Error& e) {
+    // A default outside its own range is a programming error, not the user's (exit 1, not 2).
+    throw Error(ExitCode::Internal, std::string("default of parameter declaration: ") + e.what());
+  }
   m_index[spec.key] = m_specs.size();
   m_specs.push_back(spec);
   m_values.push_back(spec.def);

@@ -19,6 +19,14 @@ std::string formatNumber(double x) {
   return os.str();
 }
 
+// Shortest text that reads back as exactly x: used where a value must not look like a neighbour
+// (1 + 1e-9 printed with 9 digits reads "1", which would make "1 is out of [0, 1]").
+std::string formatExact(double x) {
+  char buf[64];
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
+  return ec == std::errc() ? std::string(buf, end) : formatNumber(x);
+}
+
 std::string joinChoices(const std::vector<std::string>& choices) {
   std::string s;
   for (std::size_t i = 0; i < choices.size(); ++i) s += (i ? ", " : "") + choices[i];
@@ -33,7 +41,11 @@ std::string joinChoices(const std::vector<std::string>& choices) {
 bool parseDouble(std::string_view s, double& out) {
   while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
   while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  // One optional sign: from_chars takes '-' but not '+', so strip a '+' and refuse "+-1" / "++1".
+  if (!s.empty() && s.front() == '+') {
+    s.remove_prefix(1);
+    if (!s.empty() && (s.front() == '-' || s.front() == '+')) return false;
+  }
   if (s.empty()) return false;
   auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
   return ec == std::errc() && ptr == s.data() + s.size() && std::isfinite(out);
@@ -112,8 +124,15 @@ void checkParamRange(const ParamSpec& spec, const ParamValue& value) {
   for (int i = 0; i < n; ++i) {
     const double x = value.v[i];
     const bool integral = spec.type != ParamType::Float && spec.type != ParamType::Vec3 && spec.type != ParamType::Color;
-    if (!std::isfinite(x) || x < spec.min || x > spec.max || (integral && x != std::floor(x)))
-      usageError("value " + formatParamValue(spec, value) + " for '" + spec.key + "' is out of " + describeRange(spec));
+    // Printed exactly: a value just outside the range must not read as the bound itself.
+    const std::string shown = (spec.type == ParamType::Vec3 || spec.type == ParamType::Color)
+                                  ? formatExact(value.v[0]) + "," + formatExact(value.v[1]) + "," + formatExact(value.v[2])
+                                  : formatExact(x);
+    if (!std::isfinite(x) || x < spec.min || x > spec.max)
+      usageError("value " + shown + " for '" + spec.key + "' is out of " + describeRange(spec));
+    if (integral && x != std::floor(x))
+      usageError("value " + shown + " for '" + spec.key + "' is not an integer (" + paramTypeName(spec.type) + ", " +
+                 describeRange(spec) + ")");
   }
 }
 
@@ -125,7 +144,10 @@ ParamValue parseParamValue(const ParamSpec& spec, const std::string& text) {
     break;
   case ParamType::Int: {
     std::string_view s = text;
-    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+    if (!s.empty() && s.front() == '+') {
+      s.remove_prefix(1);
+      if (!s.empty() && (s.front() == '-' || s.front() == '+')) badValue(spec, text, "not an integer"); // "+-1"
+    }
     long long i = 0;
     auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), i);
     if (s.empty() || ec != std::errc() || ptr != s.data() + s.size()) badValue(spec, text, "not an integer");
@@ -195,8 +217,10 @@ std::string formatParamValue(const ParamSpec& spec, const ParamValue& value) {
   switch (spec.type) {
   case ParamType::Bool: return value.v[0] != 0 ? "true" : "false";
   case ParamType::Enum: {
-    const auto i = std::size_t(value.v[0]);
-    return i < spec.choices.size() ? spec.choices[i] : formatNumber(value.v[0]);
+    const double x = value.v[0];
+    // Guarded: converting a negative or non-finite double to size_t is undefined.
+    if (!(x >= 0.0 && x < double(spec.choices.size())) || x != std::floor(x)) return formatNumber(x);
+    return spec.choices[std::size_t(x)];
   }
   case ParamType::Vec3:
   case ParamType::Color:

@@ -4,17 +4,24 @@
 #include "util/atomic_file.h"
 #include "util/error.h"
 
+#include <filesystem>
+
 namespace rtlab {
 
 Preset loadPreset(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) inputError("cannot read preset '" + path + "': it is a directory");
   const std::string text = readFileOrThrow(path, "preset");
-  nlohmann::json j = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  // ordered_json keeps the file's key order (nlohmann::json sorts keys), so params apply and
+  // report errors in the order the file lists them.
+  nlohmann::ordered_json j = nlohmann::ordered_json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (j.is_discarded()) inputError("preset '" + path + "' is not valid JSON");
   if (!j.is_object()) inputError("preset '" + path + "' must be a JSON object");
   Preset p;
   for (const auto& [name, value] : j.items()) {
     if (name == "schema") {
-      if (!value.is_number_integer() || value.get<int>() != 1)
+      // get<long long>: get<int> would wrap 4294967297 to 1.
+      if (!value.is_number_integer() || value.get<long long>() != 1)
         inputError("preset '" + path + "' has unsupported schema " + value.dump() + " (expected 1)");
     } else if (name == "scene") {
       if (!value.is_string()) inputError("preset '" + path + "': \"scene\" must be a string");
@@ -29,7 +36,7 @@ Preset loadPreset(const std::string& path) {
       p.techniques = ids;
     } else if (name == "params") {
       if (!value.is_object()) inputError("preset '" + path + "': \"params\" must be an object");
-      for (const auto& [key, v] : value.items()) p.params.emplace_back(key, v);
+      for (const auto& [key, v] : value.items()) p.params.emplace_back(key, nlohmann::json(v));
     } else {
       inputError("preset '" + path + "' has unknown field \"" + name + "\"");
     }

@@ -114,7 +114,8 @@ void convertMaterials(const tinygltf::Model& model, Scene& scene, const std::str
     m.metallic = static_cast<float>(pbr.metallicFactor);
     m.roughness = static_cast<float>(pbr.roughnessFactor);
     const float strength = emissiveStrength(src, who, file);
-    for (int c = 0; c < 3; ++c) m.emissive[c] = strength * static_cast<float>(src.emissiveFactor[static_cast<size_t>(c)]);
+    for (int c = 0; c < 3; ++c)
+      m.emissive[c] = strength * static_cast<float>(src.emissiveFactor[static_cast<size_t>(c)]);
     m.normalScale = static_cast<float>(src.normalTexture.scale);
     m.occlusionStrength = static_cast<float>(src.occlusionTexture.strength);
     m.alphaMode = src.alphaMode == "BLEND" ? AlphaMode::Blend

@@ -127,7 +127,10 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes) {
     ok = false;
     err = std::string("exception: ") + e.what();
   }
-  if (!ok) gltf::fail(path, std::string(binary ? "not a valid binary glTF file: " : "not a valid glTF file: ") + tidy(err));
+  if (!ok) {
+    const char* what = binary ? "not a valid binary glTF file: " : "not a valid glTF file: ";
+    gltf::fail(path, what + tidy(err));
+  }
   logEachLine(path, err); // non-fatal problems tinygltf reports as errors (e.g. chunk padding)
   logEachLine(path, warnings);
   return model;

@@ -12,6 +12,17 @@ namespace {
 
 constexpr double kMaxCoord = 1.0e5;
 
+// A declared default must lie in its own range, and a scene file may hold values beyond the
+// nominal ranges (the loader accepts angles up to 89 degrees, any non-negative intensity, any
+// coordinates): widen a range to include the scene's value rather than fail on a valid file.
+ParamSpec& widenToDefault(ParamSpec& spec) {
+  for (int i = 0; i < spec.components(); ++i) {
+    spec.min = std::min(spec.min, spec.def.v[i]);
+    spec.max = std::max(spec.max, spec.def.v[i]);
+  }
+  return spec;
+}
+
 std::string lightPrefix(std::size_t i) { return "light" + std::to_string(i) + "."; }
 
 const char* lightTypeName(LightType t) {
@@ -28,41 +39,42 @@ const char* lightTypeName(LightType t) {
 
 std::vector<ParamSpec> sceneParamSpecs(const Scene& scene) {
   std::vector<ParamSpec> specs;
+  const auto add = [&](ParamSpec spec) { specs.push_back(widenToDefault(spec)); };
   const double sceneSize = std::max(1.0, double(scene.worldBounds().radius()));
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& l = scene.lights[i];
     const std::string p = lightPrefix(i);
     const std::string what = std::string(" of light ") + std::to_string(i) + " (" + lightTypeName(l.type) + ")";
-    specs.push_back(ParamSpec::real(p + "intensity", "Intensity", l.intensity, 0.0, 1.0e6)
+    add(ParamSpec::real(p + "intensity", "Intensity", l.intensity, 0.0, 1.0e6)
                         .withUnit(l.type == LightType::Directional ? "lux" : l.type == LightType::Rect ? "nit" : "cd")
                         .withHelp("Intensity" + what + ", glTF units"));
-    specs.push_back(ParamSpec::color(p + "color", "Color", l.color).withHelp("Linear RGB color" + what));
+    add(ParamSpec::color(p + "color", "Color", l.color).withHelp("Linear RGB color" + what));
     if (l.type != LightType::Directional)
-      specs.push_back(ParamSpec::vector3(p + "position", "Position", l.position, -kMaxCoord, kMaxCoord)
+      add(ParamSpec::vector3(p + "position", "Position", l.position, -kMaxCoord, kMaxCoord)
                           .withUnit("scene units").withHelp("World position" + what));
     if (l.type != LightType::Point)
-      specs.push_back(ParamSpec::vector3(p + "direction", "Direction", l.direction, -1.0, 1.0)
+      add(ParamSpec::vector3(p + "direction", "Direction", l.direction, -1.0, 1.0)
                           .withHelp("Direction the light travels" + what + " (normalized when applied; not zero)"));
     if (l.type == LightType::Point || l.type == LightType::Spot)
-      specs.push_back(ParamSpec::real(p + "radius", "Radius", l.radius, 0.0, std::max(double(l.radius), sceneSize))
+      add(ParamSpec::real(p + "radius", "Radius", l.radius, 0.0, std::max(double(l.radius), sceneSize))
                           .withUnit("scene units").withHelp("Radius of the emitting disk" + what + "; 0 = a point"));
     if (l.type == LightType::Directional)
-      specs.push_back(ParamSpec::real(p + "angle", "Angular radius", l.angle, 0.0, 45.0)
+      add(ParamSpec::real(p + "angle", "Angular radius", l.angle, 0.0, 45.0)
                           .withUnit("degrees").withHelp("Angular radius of the light's cone" + what + "; 0 = a direction"));
     if (l.type == LightType::Rect) {
       const double maxSize = std::max({double(l.width), double(l.height), 4.0 * sceneSize});
-      specs.push_back(ParamSpec::real(p + "width", "Width", l.width, 0.0, maxSize).withUnit("scene units")
+      add(ParamSpec::real(p + "width", "Width", l.width, 0.0, maxSize).withUnit("scene units")
                           .withHelp("Width (along its right axis)" + what));
-      specs.push_back(ParamSpec::real(p + "height", "Height", l.height, 0.0, maxSize).withUnit("scene units")
+      add(ParamSpec::real(p + "height", "Height", l.height, 0.0, maxSize).withUnit("scene units")
                           .withHelp("Height (along its up axis)" + what));
     }
   }
   const Camera& c = scene.camera;
-  specs.push_back(ParamSpec::vector3("camera.position", "Camera position", c.position, -kMaxCoord, kMaxCoord)
+  add(ParamSpec::vector3("camera.position", "Camera position", c.position, -kMaxCoord, kMaxCoord)
                       .withUnit("scene units").withHelp("Camera position (world)"));
-  specs.push_back(ParamSpec::vector3("camera.target", "Camera target", c.target, -kMaxCoord, kMaxCoord)
+  add(ParamSpec::vector3("camera.target", "Camera target", c.target, -kMaxCoord, kMaxCoord)
                       .withUnit("scene units").withHelp("Point the camera looks at (world)"));
-  specs.push_back(ParamSpec::real("camera.fov", "Field of view", c.fovY, 1.0, 170.0)
+  add(ParamSpec::real("camera.fov", "Field of view", c.fovY, 1.0, 170.0)
                       .withUnit("degrees").withHelp("Vertical field of view"));
   return specs;
 }

@@ -21,7 +21,7 @@ public:
     info.stage = "shadow";
     info.title = "Shadow map (Williams 1978)";
     info.summary = "Binary visibility of light 0 from one depth comparison against the light-space depth map";
-    info.debugViews = {{"shadow_map.light_depth", 1, "light-space depth map of light 0, raw [0,1] (cube maps unwrapped)"}};
+    info.debugViews = {{"shadow_map.light_depth", 1, "light-space depth of light 0, linear from its near (0) to far (1) plane (cube maps unwrapped)"}};
     return info;
   }
   const TechniqueInfo& info() const override { return m_info; }
@@ -75,7 +75,8 @@ public:
           p.use();
           ctx.texture(kShadowDepth).bind(0);
           glBindSampler(0, m_rawDepth.id());
-          p.set("uDepth", 0);
+          const LightSpace ls = shadowLightSpace(ctx.scene, ctx.params);
+          p.set("uDepth", 0).set("uNear", ls.znear).set("uFar", ls.zfar);
           ctx.common.drawFullscreen();
           glBindSampler(0, 0);
           glBindFramebuffer(GL_FRAMEBUFFER, 0);

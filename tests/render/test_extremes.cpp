@@ -23,14 +23,6 @@ constexpr std::size_t kMaxResourceBytes = std::size_t(512) << 20;
 constexpr double kMaxSeconds = 60.0;
 constexpr int kSize = 64;
 
-// The scene each stage's techniques are shown on.
-std::string showcaseScene(const std::string& stage) {
-  if (stage == "ao" || stage == "indirect") return "cornell";
-  if (stage == "transparency") return "panes";
-  if (stage == "arealight") return "arealight";
-  return "contact";
-}
-
 struct ExtremeCase {
   std::string technique, key, value;
 };
@@ -73,7 +65,7 @@ TEST_P(Extremes, RendersFiniteWithoutGlErrors) {
   const std::string stageAov = findStage(entry.info.stage)->output;
   std::vector<std::string> sets;
   if (!c.key.empty()) sets.push_back(c.key + "=" + c.value);
-  TestFrame f = makeTestFrame(showcaseScene(entry.info.stage), c.technique, sets, kSize, kSize);
+  TestFrame f = makeTestFrame(entry.info.showcaseScene, c.technique, sets, kSize, kSize);
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::string> aovs = {"color"};
   if (stageAov != "color") aovs.push_back(stageAov);

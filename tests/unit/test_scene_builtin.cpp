@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -30,6 +31,22 @@ Bounds instanceBounds(const Scene& s, const std::string& name) {
   one.meshes = s.meshes;
   if (i >= 0) one.instances = {s.instances[static_cast<size_t>(i)]};
   return one.worldBounds();
+}
+
+// Slab test: does the segment a->b (excluding its last 1%) pass through the box?
+bool segmentHitsBox(const glm::vec3& a, const glm::vec3& b, const Bounds& box) {
+  float t0 = 0.0f, t1 = 0.99f;
+  for (int k = 0; k < 3; ++k) {
+    float d = b[k] - a[k];
+    if (std::fabs(d) < 1e-12f) {
+      if (a[k] < box.min[k] || a[k] > box.max[k]) return false;
+      continue;
+    }
+    float u = (box.min[k] - a[k]) / d, v = (box.max[k] - a[k]) / d;
+    t0 = std::max(t0, std::min(u, v));
+    t1 = std::min(t1, std::max(u, v));
+  }
+  return t0 <= t1;
 }
 
 // Every triangle is counter-clockwise seen from the side its vertex normals point to.
@@ -119,6 +136,11 @@ TEST(SceneBuiltin, ContactHasGroundAndFloatingBoxAboveIt) {
     Bounds o = instanceBounds(s, other);
     bool inside = shadow.x > o.min.x && shadow.x < o.max.x && shadow.z > o.min.z && shadow.z < o.max.z;
     EXPECT_FALSE(inside) << other;
+  }
+  // Nothing (not even the floating box) hides the shadow centre from the camera.
+  for (const char* other : {"box", "sphere", "wall", "floating"}) {
+    Bounds o = instanceBounds(s, other);
+    EXPECT_FALSE(segmentHitsBox(s.camera.position, shadow, o)) << other;
   }
   const glm::vec3 toShadow = glm::normalize(shadow - s.camera.position);
   const glm::vec3 forward = glm::normalize(s.camera.target - s.camera.position);

@@ -1,0 +1,16 @@
+// Small helpers for the self-contained HTML pages rtlab writes (showcase now, sweep reports later).
+#pragma once
+#include <string>
+#include <vector>
+
+namespace rtlab::html {
+
+std::string escape(const std::string& text);
+// A table with a header row; cells are escaped.
+std::string table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows);
+// The page skeleton with rtlab's inline stylesheet.
+std::string page(const std::string& title, const std::string& body);
+std::string formatMs(double ms);
+std::string formatBytes(std::size_t bytes);
+
+} // namespace rtlab::html

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Installs rtlab's Debian 12 packages when any is missing (as root, non-interactive, one
+# 'apt-get update'), then configures and builds into build/ (Release). Idempotent: with every
+# package present and the build up to date it only runs the (no-op) incremental build.
+#   bash scripts/setup.sh [--test-deps]   --test-deps also installs what the tests need
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  cmake g++ make pkg-config git ca-certificates
+  libglfw3-dev libglm-dev libimgui-dev libstb-dev libtinygltf-dev
+  libosmesa6-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri
+  python3-glad nlohmann-json3-dev libtinyexr-dev
+)
+# googletest is needed to configure the test targets, which are part of every build.
+packages+=(googletest libgtest-dev)
+# What only the tests use: Xvfb runs the window path under a virtual display.
+test_packages=(xvfb xauth)
+if [[ "${1:-}" == "--test-deps" ]]; then packages+=("${test_packages[@]}"); fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then missing+=("$p"); fi
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}" >&2
+  if [[ $(id -u) -ne 0 ]]; then
+    echo "setup: error: packages are missing and this is not root; run as root: apt-get install ${missing[*]}" >&2
+    exit 1
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+jobs=$(nproc 2>/dev/null || echo 2)
+if [[ ! -f build/CMakeCache.txt ]]; then
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+fi
+echo "setup: building (log in build/build.log)" >&2
+if ! cmake --build build -j"$jobs" >build/build.log 2>&1; then
+  grep -E "error|Error" build/build.log | head -20 >&2 || true
+  echo "setup: error: the build failed; see build/build.log" >&2
+  exit 1
+fi
+echo "setup: build/rtlab is ready" >&2

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Sets up, builds, and runs every test: unit, render (headless on llvmpipe) and command-line
+# tests with ctest, then the unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh --test-deps
+jobs=$(nproc 2>/dev/null || echo 2)
+export RTLAB_LOG=${RTLAB_LOG:-warn}
+
+echo "== unit, render and CLI tests (build/) =="
+(cd build && ctest --output-on-failure -j"$jobs")
+
+echo "== unit tests under ASan + UBSan (build-asan/) =="
+if [[ ! -f build-asan/CMakeCache.txt ]]; then
+  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DRTLAB_SANITIZE=ON -DRTLAB_UNIT_ONLY=ON >/dev/null
+fi
+if ! cmake --build build-asan -j"$jobs" >build-asan/build.log 2>&1; then
+  grep -E "error|Error" build-asan/build.log | head -20 >&2 || true
+  echo "test: error: the sanitizer build failed; see build-asan/build.log" >&2
+  exit 1
+fi
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+(cd build-asan && ctest --output-on-failure -j"$jobs")
