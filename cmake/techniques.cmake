@@ -3,6 +3,8 @@
 # This file generates one registry translation unit that calls them all, so registration survives
 # static linking and adding a technique needs no line anywhere else.
 file(GLOB _technique_dirs LIST_DIRECTORIES true CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/techniques/*)
+# Watch every technique source too, so a folder that gains its <id>.cpp later re-runs configure.
+file(GLOB _technique_watch CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/techniques/*/*.cpp)
 set(RTLAB_TECHNIQUE_SOURCES "")
 set(_decls "")
 set(_calls "")

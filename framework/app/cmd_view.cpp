@@ -11,6 +11,9 @@
 #include "util/error.h"
 #include "util/log.h"
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
 #include <iostream>
 
 namespace rtlab {
@@ -21,7 +24,8 @@ int runView(int argc, char** argv) {
   Args args("view", specs, argc, argv, 2);
   if (args.help()) {
     std::cout << formatHelp("rtlab view [scene and frame options] [--frames N --screenshot FILE]",
-                            "Shows the frame in a window (needs a display). Esc or closing the window quits.", specs);
+                            "Shows the frame in a window (needs a display). Esc or closing the window quits.\n"
+                            "--backend applies to headless commands only; a window always uses GLFW.", specs);
     return 0;
   }
   ResolvedFrame frame = resolveFrame(args);
@@ -44,6 +48,7 @@ int runView(int argc, char** argv) {
   int rendered = 0;
   while (!context->shouldClose()) {
     context->pollEvents();
+    if (glfwGetKey(context->window(), GLFW_KEY_ESCAPE) == GLFW_PRESS) break;
     int w = 0, h = 0;
     context->framebufferSize(w, h);
     if (w <= 0 || h <= 0) continue; // minimized

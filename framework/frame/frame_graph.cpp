@@ -16,6 +16,13 @@ gl::Texture& PassContext::texture(const std::string& resource) const {
   return *t;
 }
 
+const gl::Framebuffer& PassContext::framebuffer(const std::string& label, const std::vector<std::string>& colors,
+                                               const std::string& depth, int layer) const {
+  std::vector<const gl::Texture*> textures;
+  for (const auto& c : colors) textures.push_back(&texture(c));
+  return pool.framebuffer(label, textures, depth.empty() ? nullptr : &texture(depth), layer);
+}
+
 FrameGraph::FrameGraph(const Scene& scene, const ParamSet& params, const FrameView& view, SceneGpu& sceneGpu,
                        gl::ProgramCache& programs, ResourcePool& pool, const GpuCommon& common)
     : m_ctx{scene, params, view, sceneGpu, programs, pool, common} {}

@@ -6,6 +6,7 @@
 // them. A technique that is off adds no pass and holds no pool memory.
 #pragma once
 #include "frame/frame_view.h"
+#include "gl/objects.h"
 #include "gl/texture.h"
 
 #include <functional>
@@ -49,6 +50,9 @@ struct PassContext {
   const GpuCommon& common;
   bool has(const std::string& resource) const;
   gl::Texture& texture(const std::string& resource) const; // Error(Internal) if absent
+  // A framebuffer over frame resources (cached by the pool across frames).
+  const gl::Framebuffer& framebuffer(const std::string& label, const std::vector<std::string>& colors,
+                                     const std::string& depth = "", int layer = -1) const;
 };
 
 class FrameGraph {

@@ -77,7 +77,7 @@ void Renderer::render(const ParamSet& params, int width, int height, const Frame
   addGBufferPass(graph);
   for (const char* stage : {"shadow", "ao", "indirect"}) setupStage(stage);
   addLightingPass(graph);
-  setupStage("arealight");
+  if (m_scene.hasAreaLight()) setupStage("arealight"); // no area light: no area-light stage
   if (m_scene.hasTransparency()) {
     const bool oit = std::any_of(m_order.begin(), m_order.end(),
                                  [&](const std::string& id) { return m_techniques.at(id)->info().stage == "transparency"; });

@@ -1,6 +1,7 @@
 // Frame-graph textures by name. A texture survives from frame to frame while some kept pass keeps
 // writing it with the same description; anything not written in a frame is released at compile().
 #pragma once
+#include "gl/objects.h"
 #include "gl/texture.h"
 
 #include <cstddef>
@@ -16,9 +17,17 @@ public:
   gl::Texture& acquire(const std::string& name, const gl::TextureDesc& desc);
   // Releases every texture whose name is not in `keep`.
   void releaseExcept(const std::vector<std::string>& keep);
-  void releaseAll() { m_textures.clear(); }
+  void releaseAll() {
+    m_framebuffers.clear();
+    m_textures.clear();
+  }
   bool has(const std::string& name) const { return m_textures.count(name) != 0; }
   gl::Texture* find(const std::string& name);
+
+  // A framebuffer over pool textures, cached until any pool texture is allocated or released
+  // (GL reuses texture names, so a cached framebuffer must not outlive its attachments).
+  const gl::Framebuffer& framebuffer(const std::string& label, const std::vector<const gl::Texture*>& colors,
+                                     const gl::Texture* depth = nullptr, int layer = -1);
 
   struct Entry {
     std::string name;
@@ -29,6 +38,7 @@ public:
 
 private:
   std::map<std::string, gl::Texture> m_textures;
+  std::map<std::string, gl::Framebuffer> m_framebuffers;
 };
 
 } // namespace rtlab

@@ -40,7 +40,7 @@ struct ParamSpec {
   std::vector<std::string> choices; // enums
   unsigned flags = kParamUniform;
 
-  // Fluent constructors: ParamSpec::real("pcf.radius", "Radius", 1.5, 0, 8).unit("texels").help("...")
+  // Fluent constructors: ParamSpec::real("pcf.radius", "Radius", 1.5, 0, 8).withUnit("texels").withHelp("...")
   static ParamSpec real(std::string key, std::string label, double def, double min, double max);
   static ParamSpec integer(std::string key, std::string label, int def, int min, int max);
   static ParamSpec boolean(std::string key, std::string label, bool def);

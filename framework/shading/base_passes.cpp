@@ -34,9 +34,8 @@ void addGBufferPass(FrameGraph& frame) {
         b.write(res::kDepth, frameTexture(frame, GL_DEPTH_COMPONENT32F));
       },
       [](PassContext& ctx) {
-        gl::Framebuffer fbo = makeFramebuffer("gbuffer",
-            {&ctx.texture(res::kPosition), &ctx.texture(res::kNormal), &ctx.texture(res::kGeometry),
-             &ctx.texture(res::kAlbedo), &ctx.texture(res::kMaterial)}, &ctx.texture(res::kDepth));
+        const gl::Framebuffer& fbo = ctx.framebuffer("gbuffer",
+            {res::kPosition, res::kNormal, res::kGeometry, res::kAlbedo, res::kMaterial}, res::kDepth);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, ctx.view.width, ctx.view.height);
         const float zero[4] = {0, 0, 0, 0};
@@ -74,7 +73,7 @@ void addLightingPass(FrameGraph& frame) {
         for (const auto& [name, define] : optional)
           if (ctx.has(name)) defines.push_back(define);
         gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/lighting.frag"}, defines, "lighting"});
-        gl::Framebuffer fbo = makeFramebuffer("lighting", {&ctx.texture(res::kColorHdr)});
+        const gl::Framebuffer& fbo = ctx.framebuffer("lighting", {res::kColorHdr});
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, ctx.view.width, ctx.view.height);
         glDisable(GL_DEPTH_TEST);
@@ -111,7 +110,7 @@ void addTransparentPass(FrameGraph& frame) {
         b.write(res::kColorHdr, frameTexture(frame, GL_RGBA16F));
       },
       [](PassContext& ctx) {
-        gl::Framebuffer fbo = makeFramebuffer("transparent", {&ctx.texture(res::kColorHdr)}, &ctx.texture(res::kDepth));
+        const gl::Framebuffer& fbo = ctx.framebuffer("transparent", {res::kColorHdr}, res::kDepth);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, ctx.view.width, ctx.view.height);
         glEnable(GL_DEPTH_TEST);
@@ -140,7 +139,7 @@ void addTonemapPass(FrameGraph& frame) {
         b.write(res::kColorLdr, frameTexture(frame, GL_RGBA16F));
       },
       [](PassContext& ctx) {
-        gl::Framebuffer fbo = makeFramebuffer("tonemap", {&ctx.texture(res::kColorLdr)});
+        const gl::Framebuffer& fbo = ctx.framebuffer("tonemap", {res::kColorLdr});
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, ctx.view.width, ctx.view.height);
         glDisable(GL_DEPTH_TEST);
@@ -179,7 +178,7 @@ std::string addAovPass(FrameGraph& frame, const std::string& aov) {
         std::vector<std::string> defines;
         if (!define.empty()) defines.push_back(define);
         gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/aov.frag"}, defines, "aov"});
-        gl::Framebuffer fbo = makeFramebuffer(out, {&ctx.texture(out)});
+        const gl::Framebuffer& fbo = ctx.framebuffer(out, {out});
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, ctx.view.width, ctx.view.height);
         glDisable(GL_DEPTH_TEST);

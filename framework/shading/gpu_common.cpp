@@ -53,7 +53,7 @@ void GpuCommon::drawFullscreen() const {
   glBindVertexArray(0);
 }
 
-gl::Framebuffer makeFramebuffer(const std::string& label, std::initializer_list<const gl::Texture*> colors,
+gl::Framebuffer makeFramebuffer(const std::string& label, const std::vector<const gl::Texture*>& colors,
                                 const gl::Texture* depth, int layer) {
   gl::Framebuffer fbo(label);
   std::vector<GLenum> drawBuffers;

@@ -6,7 +6,7 @@
 #include "gl/texture.h"
 #include "scene/scene.h"
 
-#include <initializer_list>
+#include <vector>
 #include <string>
 
 namespace rtlab {
@@ -26,7 +26,7 @@ struct GpuCommon {
 
 // A framebuffer over the given attachments (color attachment i = colors[i]); `layer` selects a
 // cube face for a cube depth texture. Throws Error(Internal) if GL reports it incomplete.
-gl::Framebuffer makeFramebuffer(const std::string& label, std::initializer_list<const gl::Texture*> colors,
+gl::Framebuffer makeFramebuffer(const std::string& label, const std::vector<const gl::Texture*>& colors,
                                 const gl::Texture* depth = nullptr, int layer = -1);
 
 } // namespace rtlab

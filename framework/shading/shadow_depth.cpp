@@ -60,8 +60,8 @@ void addShadowDepthPass(FrameGraph& frame) {
           glDisable(GL_CULL_FACE);
         }
         for (int face = 0; face < ls.faces(); ++face) {
-          gl::Framebuffer fbo = makeFramebuffer("shadow.depth", {}, &map,
-                                                ls.projection == LightProjection::Cube ? face : -1);
+          const gl::Framebuffer& fbo =
+              ctx.framebuffer("shadow.depth", {}, kShadowDepth, ls.projection == LightProjection::Cube ? face : -1);
           glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
           const float one = 1.0f;
           glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);

@@ -38,7 +38,7 @@ public:
         },
         [projection](PassContext& ctx) {
           gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shadow_map/visibility.frag"}, {projection}, "shadow_map.visibility"});
-          gl::Framebuffer fbo = makeFramebuffer("shadow_map.visibility", {&ctx.texture("visibility")});
+          const gl::Framebuffer& fbo = ctx.framebuffer("shadow_map.visibility", {"visibility"});
           glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
           glViewport(0, 0, ctx.view.width, ctx.view.height);
           glDisable(GL_DEPTH_TEST);
@@ -59,7 +59,7 @@ public:
         [this, projection](PassContext& ctx) {
           gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shadow_map/light_depth.frag"}, {projection}, "shadow_map.light_depth"});
           const std::string out = aovResource("shadow_map.light_depth");
-          gl::Framebuffer fbo = makeFramebuffer(out, {&ctx.texture(out)});
+          const gl::Framebuffer& fbo = ctx.framebuffer(out, {out});
           glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
           glViewport(0, 0, ctx.view.width, ctx.view.height);
           glDisable(GL_DEPTH_TEST);

@@ -87,6 +87,18 @@ TEST(CliFailures, AutoFallsBackToOsMesa) {
   EXPECT_EQ(j["backend"], "osmesa");
 }
 
+TEST(CliFailures, InterruptLeavesNoOutput) {
+  // A long render interrupted after a second: exit 130, one error line, no image, no stats, and
+  // no temporary file in the output folder.
+  const fs::path dir = testDir("interrupt");
+  const auto r = runProcess(RTLAB_BINARY, {"render", "-t", "shadow_map", "--size", "1024x1024", "--frames", "100000",
+                                          "--out", (dir / "x.png").string(), "--stats", (dir / "s.json").string()},
+                            120, 1000);
+  EXPECT_EQ(r.exitCode, 130) << r.err;
+  EXPECT_EQ(rtlab::test::lineCount(r.err), 1) << r.err;
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
 TEST(CliRender, StatsFollowTheContract) {
   const fs::path dir = testDir("stats");
   const auto r = runProcess(RTLAB_BINARY, {"render", "-t", "shadow_map", "--size", "48x32", "--frames", "3", "--aov",

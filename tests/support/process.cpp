@@ -23,7 +23,8 @@ std::string slurp(const std::string& path) {
 
 } // namespace
 
-ProcessResult runProcess(const std::string& program, const std::vector<std::string>& args, int timeoutSeconds) {
+ProcessResult runProcess(const std::string& program, const std::vector<std::string>& args, int timeoutSeconds,
+                         int interruptAfterMs) {
   char outTemplate[] = "/tmp/rtlab-test-out-XXXXXX";
   char errTemplate[] = "/tmp/rtlab-test-err-XXXXXX";
   const int outFd = mkstemp(outTemplate);
@@ -41,10 +42,17 @@ ProcessResult runProcess(const std::string& program, const std::vector<std::stri
     _exit(127);
   }
   int status = 0;
+  const auto start = std::chrono::steady_clock::now();
+  bool interrupted = false;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeoutSeconds);
   while (true) {
     const pid_t done = waitpid(pid, &status, WNOHANG);
     if (done == pid) break;
+    if (interruptAfterMs >= 0 && !interrupted &&
+        std::chrono::steady_clock::now() - start > std::chrono::milliseconds(interruptAfterMs)) {
+      kill(pid, SIGINT);
+      interrupted = true;
+    }
     if (std::chrono::steady_clock::now() > deadline) {
       kill(pid, SIGKILL);
       waitpid(pid, &status, 0);

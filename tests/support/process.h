@@ -11,7 +11,9 @@ struct ProcessResult {
   std::string out, err;
 };
 
-ProcessResult runProcess(const std::string& program, const std::vector<std::string>& args, int timeoutSeconds = 60);
+// With interruptAfterMs >= 0 the process gets SIGINT that many milliseconds after it starts.
+ProcessResult runProcess(const std::string& program, const std::vector<std::string>& args, int timeoutSeconds = 60,
+                         int interruptAfterMs = -1);
 
 // Number of non-empty lines.
 int lineCount(const std::string& text);
