@@ -132,6 +132,7 @@ bool insideBox(const glm::dvec3& p, const Box& b, double eps) {
 }
 
 // The analytic light 0 and the map's light space (for the band width and the frustum test).
+// Directional lights and single-map spots only: the benchmark never makes a cube map.
 struct Truth {
   LightSetup setup;
   LightSpace ls;
@@ -392,9 +393,9 @@ int main(int argc, char** argv) {
 
     auto context = createHeadlessContext(options.backend);
     const TimingMethod timing = resolveTiming(options.timing, context->info().software);
-    std::printf("renderer: %s (%s), timing %s, %dx%d, pass times: median of %d frames after 2 warm-up\n",
+    std::printf("renderer: %s (%s), timing %s, %dx%d, pass times: median of %d frame(s)%s\n",
                 context->info().renderer.c_str(), context->backendName().c_str(), timingName(timing), options.width,
-                options.height, options.frames);
+                options.height, options.frames, options.frames > 1 ? " after 2 warm-up" : ", no warm-up");
     std::printf("percentages of camera-visible pixels inside the map, outside the %.1f-texel aliasing band; "
                 "defaults: constant 0.001, slope 1.5, normal 0.5, resolution 2048, format 24\n", kBandTexels);
     for (bool spot : {false, true}) {

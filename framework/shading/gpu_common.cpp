@@ -25,6 +25,9 @@ float typeCode(LightType t) {
 } // namespace
 
 void GpuCommon::uploadLights(const Scene& scene) {
+  if (scene.lights.size() > std::size_t(kMaxLights))
+    inputError("scene '" + scene.name + "' has " + std::to_string(scene.lights.size()) + " lights; rtlab shades at most " +
+               std::to_string(kMaxLights));
   std::vector<GpuLight> data;
   for (const Light& l : scene.lights) {
     GpuLight g;
@@ -36,14 +39,16 @@ void GpuCommon::uploadLights(const Scene& scene) {
     g.rectUp = glm::vec4(l.up, l.height);
     data.push_back(g);
   }
-  lights = gl::Buffer("lights");
-  const GLsizeiptr bytes = GLsizeiptr(data.size() * sizeof(GpuLight));
-  glNamedBufferStorage(lights.id(), bytes > 0 ? bytes : GLsizeiptr(sizeof(GpuLight)), data.empty() ? nullptr : data.data(), 0);
+  if (!lights) {
+    lights = gl::Buffer("lights");
+    glNamedBufferStorage(lights.id(), GLsizeiptr(kMaxLights * sizeof(GpuLight)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
+  if (!data.empty()) glNamedBufferSubData(lights.id(), 0, GLsizeiptr(data.size() * sizeof(GpuLight)), data.data());
   lightCount = int(data.size());
 }
 
 void GpuCommon::bindLights(gl::Program& program) const {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, lights.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, lights.id());
   program.set("uLightCount", lightCount);
 }
 

@@ -12,11 +12,14 @@
 namespace rtlab {
 
 struct GpuCommon {
+  static constexpr int kMaxLights = 64; // shaders/common/lights.glsl has the same constant
+
   gl::VertexArray emptyVao{"fullscreen"};
   gl::Buffer lights;
   int lightCount = 0;
 
-  // Uploads the scene's lights (re-created each call; a handful of vec4s).
+  // Uploads the scene's lights into the uniform buffer (created once). Error(Input) for a scene
+  // with more than kMaxLights lights.
   void uploadLights(const Scene& scene);
   // Binds the light buffer to binding 0 and sets uLightCount on the program.
   void bindLights(gl::Program& program) const;
