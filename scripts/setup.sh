@@ -10,12 +10,13 @@ packages=(
   cmake g++ make pkg-config git ca-certificates
   libglfw3-dev libglm-dev libimgui-dev libstb-dev libtinygltf-dev
   libosmesa6-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri
-  python3-glad nlohmann-json3-dev libtinyexr-dev
+  python3-glad nlohmann-json3-dev libtinyexr-dev libembree-dev libtbb-dev
 )
 # googletest is needed to configure the test targets, which are part of every build.
 packages+=(googletest libgtest-dev)
-# What only the tests use: Xvfb runs the window path under a virtual display.
-test_packages=(xvfb xauth)
+# What only the tests use: Xvfb runs the window path under a virtual display; Chromium opens
+# the HTML reports headless.
+test_packages=(xvfb xauth chromium)
 if [[ "${1:-}" == "--test-deps" ]]; then packages+=("${test_packages[@]}"); fi
 
 missing=()

@@ -90,6 +90,8 @@ void Renderer::render(const ParamSet& params, int width, int height, const Frame
   std::vector<std::string> targets;
   for (const auto& aov : outputs.aovs) targets.push_back(isBuiltinAov(aov) ? addAovPass(graph, aov) : aovResource(aov));
   if (outputs.displayColor) targets.push_back(res::kColorLdr);
+  if (outputs.surfaces)
+    for (const auto* r : {&res::kPosition, &res::kGeometry, &res::kNormal}) targets.push_back(*r);
   graph.compile(targets);
   timer.beginFrame();
   graph.run(timer);
@@ -108,6 +110,31 @@ Image Renderer::readDisplayColor() const {
   const gl::Texture* tex = const_cast<ResourcePool&>(m_pool).find(res::kColorLdr);
   if (!tex) throw Error(ExitCode::Internal, "display color was not rendered");
   return readTexture(*tex, 3, false);
+}
+
+SurfaceData Renderer::readSurfaces() const {
+  auto& pool = const_cast<ResourcePool&>(m_pool);
+  const gl::Texture* pos = pool.find(res::kPosition);
+  const gl::Texture* geo = pool.find(res::kGeometry);
+  const gl::Texture* nrm = pool.find(res::kNormal);
+  if (!pos || !geo || !nrm) throw Error(ExitCode::Internal, "surfaces were not kept (FrameOutputs::surfaces)");
+  const Image p = readTexture(*pos, 3, false), g = readTexture(*geo, 3, true), n = readTexture(*nrm, 3, false);
+  SurfaceData s;
+  s.width = p.width;
+  s.height = p.height;
+  const std::size_t count = s.pixelCount();
+  s.position.resize(count);
+  s.geometricNormal.resize(count);
+  s.shadingNormal.resize(count);
+  s.valid.resize(count);
+  auto unit = [](glm::vec3 v) { return glm::dot(v, v) > 0.0f ? glm::normalize(v) : glm::vec3(0.0f); };
+  for (std::size_t i = 0; i < count; ++i) {
+    s.valid[i] = g.mask[i] >= 0.5f ? 1 : 0;
+    s.position[i] = glm::vec3(p.pixels[i * 3], p.pixels[i * 3 + 1], p.pixels[i * 3 + 2]);
+    s.geometricNormal[i] = unit(glm::vec3(g.pixels[i * 3], g.pixels[i * 3 + 1], g.pixels[i * 3 + 2]));
+    s.shadingNormal[i] = unit(glm::vec3(n.pixels[i * 3], n.pixels[i * 3 + 1], n.pixels[i * 3 + 2]));
+  }
+  return s;
 }
 
 const gl::Texture* Renderer::resource(const std::string& name) { return m_pool.find(name); }

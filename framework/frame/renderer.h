@@ -10,6 +10,7 @@
 #include "frame/technique.h"
 #include "gl/program_cache.h"
 #include "image/image.h"
+#include "reference/surfaces.h"
 #include "scene/scene.h"
 #include "shading/gpu_common.h"
 #include "shading/scene_gpu.h"
@@ -28,6 +29,7 @@ class TechniqueRegistry;
 struct FrameOutputs {
   std::vector<std::string> aovs; // built-in AOV names or active techniques' debug views
   bool displayColor = false;     // also produce tone-mapped color (color.ldr) for PNG or a window
+  bool surfaces = false;         // keep the G-buffer's surface points for readSurfaces()
 };
 
 class Renderer {
@@ -52,6 +54,8 @@ public:
   Image readAov(const std::string& aov) const;
   // The tone-mapped color of the last frame (linear, 3 channels; sRGB is applied on output).
   Image readDisplayColor() const;
+  // The surface points of the last frame (needs FrameOutputs::surfaces).
+  SurfaceData readSurfaces() const;
   // Texture of a resource of the last frame (the viewer draws it), or nullptr.
   const gl::Texture* resource(const std::string& name);
 

@@ -1,0 +1,18 @@
+// The reference of one resolved frame: renders the frame's G-buffer with `renderer` (so the
+// surface points are the GPU's), reads the surfaces back and runs the CPU reference on them.
+// Shared by `rtlab reference` and `rtlab sweep`.
+#pragma once
+#include "app/frame_options.h"
+#include "frame/renderer.h"
+#include "image/image.h"
+
+#include <string>
+
+namespace rtlab {
+
+// aov: visibility | ao | indirect (Error(Usage) otherwise). ao.radius comes from frame.params;
+// the seed from frame.options.seed.
+Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const std::string& aov, int spp,
+                           bool progress);
+
+} // namespace rtlab

@@ -1,0 +1,21 @@
+// The camera-visible surface points of one frame, read back from the G-buffer, so that the
+// reference starts from exactly the points the GPU shaded (DESIGN.md "Ground truth and metrics"):
+// primary visibility is identical and only the approximation differs.
+#pragma once
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace rtlab {
+
+struct SurfaceData {
+  int width = 0, height = 0; // rows top to bottom, like Image
+  std::vector<glm::vec3> position;        // world
+  std::vector<glm::vec3> geometricNormal; // world, unit, facing the camera
+  std::vector<glm::vec3> shadingNormal;   // world, unit, in the geometric normal's hemisphere
+  std::vector<std::uint8_t> valid;        // 1 on surface pixels, 0 on background
+  std::size_t pixelCount() const { return std::size_t(width) * height; }
+};
+
+} // namespace rtlab
