@@ -23,6 +23,33 @@ const gl::Framebuffer& PassContext::framebuffer(const std::string& label, const 
   return pool.framebuffer(label, textures, depth.empty() ? nullptr : &texture(depth), layer);
 }
 
+void PassContext::beginFullscreen(const std::string& label, const std::vector<std::string>& colors) const {
+  const gl::Framebuffer& fbo = framebuffer(label, colors);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+  const gl::TextureDesc& d = texture(colors.front()).desc();
+  glViewport(0, 0, d.width, d.height);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+}
+
+namespace {
+// The state every pass starts from; run() restores it after each pass.
+void resetPassState() {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glUseProgram(0);
+  glBindVertexArray(0);
+  glDisable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  for (GLuint unit = 0; unit < 8; ++unit) glBindSampler(unit, 0);
+}
+} // namespace
+
 FrameGraph::FrameGraph(const Scene& scene, const ParamSet& params, const FrameView& view, SceneGpu& sceneGpu,
                        gl::ProgramCache& programs, ResourcePool& pool, const GpuCommon& common)
     : m_ctx{scene, params, view, sceneGpu, programs, pool, common} {}
@@ -80,6 +107,7 @@ void FrameGraph::run(PassTimer& timer) {
     if (!p.kept) continue;
     timer.begin(p.name, p.technique);
     p.execute(m_ctx);
+    resetPassState();
     timer.end();
   }
 }

@@ -50,6 +50,10 @@ struct PassContext {
   const GpuCommon& common;
   bool has(const std::string& resource) const;
   gl::Texture& texture(const std::string& resource) const; // Error(Internal) if absent
+  // Binds a framebuffer over `colors` for a full-screen pass: viewport = the first target's size,
+  // depth test, blending and culling off. (FrameGraph::run restores the default state after every
+  // pass, so a pass sets what it needs and leaks nothing.)
+  void beginFullscreen(const std::string& label, const std::vector<std::string>& colors) const;
   // A framebuffer over frame resources (cached by the pool across frames).
   const gl::Framebuffer& framebuffer(const std::string& label, const std::vector<std::string>& colors,
                                      const std::string& depth = "", int layer = -1) const;

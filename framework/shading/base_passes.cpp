@@ -52,8 +52,6 @@ void addGBufferPass(FrameGraph& frame) {
             .set("uCameraPosition", ctx.view.cameraPosition)
             .set("uCameraForward", ctx.view.cameraForward);
         ctx.sceneGpu.draw(p, SceneGpu::Filter::Opaque, true);
-        glDisable(GL_DEPTH_TEST);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
       });
 }
 
@@ -73,12 +71,7 @@ void addLightingPass(FrameGraph& frame) {
         for (const auto& [name, define] : optional)
           if (ctx.has(name)) defines.push_back(define);
         gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/lighting.frag"}, defines, "lighting"});
-        const gl::Framebuffer& fbo = ctx.framebuffer("lighting", {res::kColorHdr});
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-        glViewport(0, 0, ctx.view.width, ctx.view.height);
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_BLEND);
-        glDisable(GL_CULL_FACE);
+        ctx.beginFullscreen("lighting", {res::kColorHdr});
         p.use();
         int unit = 0;
         auto bind = [&](const char* uniform, const std::string& resource) {
@@ -98,7 +91,6 @@ void addLightingPass(FrameGraph& frame) {
             .set("uBackground", ctx.scene.background);
         ctx.common.bindLights(p);
         ctx.common.drawFullscreen();
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
       });
 }
 
@@ -125,10 +117,6 @@ void addTransparentPass(FrameGraph& frame) {
             .set("uAmbient", ctx.scene.ambient);
         ctx.common.bindLights(p);
         ctx.sceneGpu.draw(p, SceneGpu::Filter::Transparent, true, ctx.view.cameraPosition);
-        glDisable(GL_BLEND);
-        glDepthMask(GL_TRUE);
-        glDisable(GL_DEPTH_TEST);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
       });
 }
 
@@ -139,11 +127,7 @@ void addTonemapPass(FrameGraph& frame) {
         b.write(res::kColorLdr, frameTexture(frame, GL_RGBA16F));
       },
       [](PassContext& ctx) {
-        const gl::Framebuffer& fbo = ctx.framebuffer("tonemap", {res::kColorLdr});
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-        glViewport(0, 0, ctx.view.width, ctx.view.height);
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_BLEND);
+        ctx.beginFullscreen("tonemap", {res::kColorLdr});
         gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/tonemap.frag"}, {}, "tonemap"});
         p.use();
         ctx.texture(res::kColorHdr).bind(0);
@@ -152,7 +136,6 @@ void addTonemapPass(FrameGraph& frame) {
             .set("uOperator", ctx.params.getEnum("tonemap.operator"))
             .set("uEncodeSrgb", false);
         ctx.common.drawFullscreen();
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
       });
 }
 
@@ -178,11 +161,7 @@ std::string addAovPass(FrameGraph& frame, const std::string& aov) {
         std::vector<std::string> defines;
         if (!define.empty()) defines.push_back(define);
         gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/aov.frag"}, defines, "aov"});
-        const gl::Framebuffer& fbo = ctx.framebuffer(out, {out});
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-        glViewport(0, 0, ctx.view.width, ctx.view.height);
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_BLEND);
+        ctx.beginFullscreen(out, {out});
         p.use();
         ctx.texture(res::kPosition).bind(0);
         ctx.texture(res::kNormal).bind(1);
@@ -193,7 +172,6 @@ std::string addAovPass(FrameGraph& frame, const std::string& aov) {
         p.set("uPosition", 0).set("uNormal", 1).set("uGeometry", 2).set("uAlbedo", 3).set("uSource", 4)
             .set("uHasSource", hasSource).set("uDefault", defaultValue);
         ctx.common.drawFullscreen();
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
       });
   return out;
 }

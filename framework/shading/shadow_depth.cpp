@@ -68,11 +68,6 @@ void addShadowDepthPass(FrameGraph& frame) {
           p.set("uViewProj", ls.viewProj[face]);
           ctx.sceneGpu.draw(p, SceneGpu::Filter::Opaque, false);
         }
-        glDisable(GL_POLYGON_OFFSET_FILL);
-        glDisable(GL_CULL_FACE);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glDisable(GL_DEPTH_TEST);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
       });
 }
 

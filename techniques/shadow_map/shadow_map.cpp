@@ -38,18 +38,13 @@ public:
         },
         [projection](PassContext& ctx) {
           gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shadow_map/visibility.frag"}, {projection}, "shadow_map.visibility"});
-          const gl::Framebuffer& fbo = ctx.framebuffer("shadow_map.visibility", {"visibility"});
-          glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-          glViewport(0, 0, ctx.view.width, ctx.view.height);
-          glDisable(GL_DEPTH_TEST);
-          glDisable(GL_BLEND);
+          ctx.beginFullscreen("shadow_map.visibility", {"visibility"});
           p.use();
           ctx.texture(res::kPosition).bind(0);
           ctx.texture(res::kGeometry).bind(1);
           p.set("uPosition", 0).set("uGeometry", 1);
           bindShadowSpace(ctx, p, 2);
           ctx.common.drawFullscreen();
-          glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
     frame.addPass("shadow_map.light_depth",
         [&](PassBuilder& b) {
@@ -59,11 +54,7 @@ public:
         [this, projection](PassContext& ctx) {
           gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shadow_map/light_depth.frag"}, {projection}, "shadow_map.light_depth"});
           const std::string out = aovResource("shadow_map.light_depth");
-          const gl::Framebuffer& fbo = ctx.framebuffer(out, {out});
-          glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-          glViewport(0, 0, ctx.view.width, ctx.view.height);
-          glDisable(GL_DEPTH_TEST);
-          glDisable(GL_BLEND);
+          ctx.beginFullscreen(out, {out});
           if (!m_rawDepth) {
             m_rawDepth = gl::Sampler("shadow_map.raw-depth");
             glSamplerParameteri(m_rawDepth.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
@@ -78,8 +69,6 @@ public:
           const LightSpace ls = shadowLightSpace(ctx.scene, ctx.params);
           p.set("uDepth", 0).set("uNear", ls.znear).set("uFar", ls.zfar);
           ctx.common.drawFullscreen();
-          glBindSampler(0, 0);
-          glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
   }
 

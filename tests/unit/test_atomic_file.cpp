@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -16,25 +18,12 @@ using namespace rtlab;
 
 namespace {
 
-fs::path freshDir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::path(RTLAB_TEST_TMP) / "atomic_file" /
-                 (std::string(info->name()) + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path freshDir() { return rtlab::test::freshTestDir("atomic_file"); }
+using rtlab::test::slurp;
+std::set<std::string> entries(const fs::path& dir) { return rtlab::test::dirEntries(dir); }
 
-std::set<std::string> entries(const fs::path& dir) {
-  std::set<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
-  return names;
-}
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+
 
 bool touch(const std::string& path, const std::string& text = "partial") {
   std::ofstream out(path, std::ios::binary);

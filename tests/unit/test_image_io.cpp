@@ -4,6 +4,8 @@
 #include "util/error.h"
 
 #include <gtest/gtest.h>
+
+#include "test_util.h"
 #include <stb_image_write.h>
 #include <tinyexr.h>
 
@@ -20,23 +22,14 @@ using namespace rtlab;
 
 namespace {
 
+fs::path freshDir() { return rtlab::test::freshTestDir("image_io"); }
+using rtlab::test::slurp;
+std::set<std::string> entries(const fs::path& dir) { return rtlab::test::dirEntries(dir); }
+
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-fs::path freshDir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::path(RTLAB_TEST_TMP) / "image_io" /
-                 (std::string(info->test_suite_name()) + "." + info->name() + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
-std::set<std::string> entries(const fs::path& dir) {
-  std::set<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
-  return names;
-}
 
 void writeRaw(const fs::path& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary);

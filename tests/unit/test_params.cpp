@@ -5,6 +5,8 @@
 #include "util/error.h"
 
 #include <gtest/gtest.h>
+
+#include "test_util.h"
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -13,40 +15,13 @@
 #include <vector>
 
 using namespace rtlab;
+using rtlab::test::catchError;
+using rtlab::test::Caught;
+using rtlab::test::checkCaught;
 using nlohmann::json;
 
 namespace {
 
-struct Caught {
-  bool thrown = false;
-  ExitCode code = ExitCode::Ok;
-  std::string message;
-};
-
-template <typename F>
-Caught catchError(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return {true, e.code(), e.what()};
-  } catch (const std::exception& e) {
-    return {true, ExitCode::Ok, std::string("not an rtlab::Error: ") + e.what()};
-  }
-  return {};
-}
-
-void checkCaught(const Caught& c, ExitCode code, std::initializer_list<std::string> parts) {
-  ASSERT_TRUE(c.thrown) << "expected an rtlab::Error, nothing was thrown";
-  EXPECT_EQ(int(c.code), int(code)) << c.message;
-  for (const auto& p : parts)
-    EXPECT_NE(c.message.find(p), std::string::npos) << "message \"" << c.message << "\" does not contain \"" << p << "\"";
-}
-
-#define EXPECT_RTLAB_ERROR(stmt, code, ...)                   \
-  do {                                                        \
-    SCOPED_TRACE(#stmt);                                      \
-    checkCaught(catchError([&] { stmt; }), code, {__VA_ARGS__}); \
-  } while (0)
 
 ParamSpec fSpec() { return ParamSpec::real("t.f", "F", 0.5, -2.0, 3.0); }
 ParamSpec iSpec() { return ParamSpec::integer("t.i", "I", 4, -8, 16); }

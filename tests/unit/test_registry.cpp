@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include <algorithm>
 #include <initializer_list>
 #include <memory>
@@ -18,39 +20,12 @@
 #include <vector>
 
 using namespace rtlab;
+using rtlab::test::catchError;
+using rtlab::test::Caught;
+using rtlab::test::checkCaught;
 
 namespace {
 
-struct Caught {
-  bool thrown = false;
-  ExitCode code = ExitCode::Ok;
-  std::string message;
-};
-
-template <typename F>
-Caught catchError(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return {true, e.code(), e.what()};
-  } catch (const std::exception& e) {
-    return {true, ExitCode::Ok, std::string("not an rtlab::Error: ") + e.what()};
-  }
-  return {};
-}
-
-void checkCaught(const Caught& c, ExitCode code, std::initializer_list<std::string> parts) {
-  ASSERT_TRUE(c.thrown) << "expected an rtlab::Error, nothing was thrown";
-  EXPECT_EQ(int(c.code), int(code)) << c.message;
-  for (const auto& p : parts)
-    EXPECT_NE(c.message.find(p), std::string::npos) << "message \"" << c.message << "\" does not contain \"" << p << "\"";
-}
-
-#define EXPECT_RTLAB_ERROR(stmt, code, ...)                   \
-  do {                                                        \
-    SCOPED_TRACE(#stmt);                                      \
-    checkCaught(catchError([&] { stmt; }), code, {__VA_ARGS__}); \
-  } while (0)
 
 TechniqueEntry fake(const std::string& id, const std::string& stage, std::vector<ParamSpec> params = {},
                     std::vector<DebugView> views = {}) {
