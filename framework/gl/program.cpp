@@ -125,6 +125,11 @@ Program& Program::set(const std::string& n, const glm::ivec2& v) { glProgramUnif
 Program& Program::set(const std::string& n, const glm::mat3& v) { glProgramUniformMatrix3fv(id(), location(n), 1, GL_FALSE, glm::value_ptr(v)); return *this; }
 Program& Program::set(const std::string& n, const glm::mat4& v) { glProgramUniformMatrix4fv(id(), location(n), 1, GL_FALSE, glm::value_ptr(v)); return *this; }
 
+Program& Program::set(const std::string& n, const std::vector<glm::vec2>& v) {
+  if (!v.empty()) glProgramUniform2fv(id(), location(n), GLsizei(v.size()), glm::value_ptr(v.front()));
+  return *this;
+}
+
 bool Program::sourcesChanged() const {
   for (const auto& [path, time] : m_sources) {
     std::error_code ec;

@@ -39,6 +39,8 @@ public:
   Program& set(const std::string& name, const glm::ivec2& v);
   Program& set(const std::string& name, const glm::mat3& v);
   Program& set(const std::string& name, const glm::mat4& v);
+  // Uniform arrays ("name" or "name[0]"); at most the declared length is written by GL.
+  Program& set(const std::string& name, const std::vector<glm::vec2>& values);
 
   // Files this program was built from (includes too) with their modification times, for reload.
   bool sourcesChanged() const;

@@ -81,6 +81,7 @@ void bindShadowSpace(PassContext& ctx, gl::Program& p, int unit) {
       .set("uLightNear", ls.znear)
       .set("uLightFar", ls.zfar)
       .set("uTexelScale", ls.texelScale)
+      .set("uMapResolution", float(ctx.params.getInt("shadow.resolution")))
       .set("uNormalBias", ctx.params.getFloat("shadow.normal_bias"))
       .set("uConstantBias", ctx.params.getFloat("shadow.constant_bias"));
 }

@@ -9,6 +9,7 @@ uniform float uLightFar;
 uniform float uTexelScale;
 uniform float uNormalBias;    // shadow-map texels
 uniform float uConstantBias;  // depth units of the map, [0,1]
+uniform float uMapResolution; // texels per side (per cube face)
 #if SHADOW_PROJECTION == 2
 uniform samplerCubeShadow uShadowMap;
 #else
@@ -52,8 +53,8 @@ bool shadowCoordCube(vec3 q, out vec3 dir, out float depth) {
 // Map coordinates (uv, depth in [0,1]); returns false outside the light frustum (treated as lit).
 bool shadowCoord2D(vec3 q, out vec3 coord) {
   vec4 c = uLightViewProj * vec4(q, 1.0);
+  coord = c.xyz / max(abs(c.w), 1e-20) * 0.5 + 0.5;
   if (c.w <= 0.0) return false;
-  coord = c.xyz / c.w * 0.5 + 0.5;
   return all(greaterThanEqual(coord, vec3(0.0))) && all(lessThanEqual(coord, vec3(1.0)));
 }
 #endif
@@ -69,5 +70,25 @@ float shadowTestHard(vec3 q) {
   vec3 coord;
   if (!shadowCoord2D(q, coord)) return 1.0;
   return texture(uShadowMap, vec3(coord.xy, coord.z - uConstantBias));
+#endif
+}
+
+// Linear distance from the light (light-space depth in scene units) of a stored map depth.
+float shadowLinearDepth(float d01) {
+#if SHADOW_PROJECTION == 0
+  return uLightNear + d01 * (uLightFar - uLightNear);
+#else
+  float ndc = d01 * 2.0 - 1.0;
+  return 2.0 * uLightNear * uLightFar / (uLightFar + uLightNear - ndc * (uLightFar - uLightNear));
+#endif
+}
+
+// Width in scene units that the whole map covers at light-space depth z (constant for
+// orthographic maps; grows linearly with z for perspective maps and cube faces).
+float shadowMapWidth(float z) {
+#if SHADOW_PROJECTION == 0
+  return uTexelScale * uMapResolution;
+#else
+  return z * uTexelScale * uMapResolution;
 #endif
 }

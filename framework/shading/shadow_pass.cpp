@@ -1,0 +1,120 @@
+#include "shading/shadow_pass.h"
+
+#include "frame/frame_graph.h"
+#include "frame/technique.h"
+#include "gl/program_cache.h"
+#include "shading/base_passes.h"
+#include "shading/gpu_common.h"
+#include "shading/shadow_depth.h"
+#include "util/sample_patterns.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace rtlab {
+
+void addShadowScreenPass(FrameGraph& frame, const std::string& name, const std::string& output, GLenum format,
+                         const std::string& fragment, const std::vector<std::string>& defines,
+                         std::function<void(PassContext&, gl::Program&)> bind) {
+  addShadowDepthPass(frame);
+  std::vector<std::string> allDefines = {shadowProjectionDefine(shadowLightSpace(frame.scene(), frame.params()))};
+  allDefines.insert(allDefines.end(), defines.begin(), defines.end());
+  frame.addPass(name,
+      [&](PassBuilder& b) {
+        b.read(kShadowDepth);
+        b.read(res::kPosition);
+        b.read(res::kGeometry);
+        b.write(output, frameTexture(frame, format));
+      },
+      [=](PassContext& ctx) {
+        gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", fragment}, allDefines, name});
+        ctx.beginFullscreen(name, {output});
+        p.use();
+        ctx.texture(res::kPosition).bind(0);
+        ctx.texture(res::kGeometry).bind(1);
+        p.set("uPosition", 0).set("uGeometry", 1);
+        bindShadowSpace(ctx, p, 2);
+        if (bind) bind(ctx, p);
+        ctx.common.drawFullscreen();
+      });
+}
+
+DebugView lightDepthView(const std::string& technique) {
+  return {technique + ".light_depth", 1,
+          "light-space depth of light 0, linear from its near (0) to far (1) plane (cube maps unwrapped)"};
+}
+
+void addLightDepthView(FrameGraph& frame, const std::string& view, ShadowFilterKit& kit) {
+  addShadowDepthPass(frame);
+  const std::string projection = shadowProjectionDefine(shadowLightSpace(frame.scene(), frame.params()));
+  const std::string out = aovResource(view);
+  frame.addPass(view,
+      [&](PassBuilder& b) {
+        b.read(kShadowDepth);
+        b.write(out, frameTexture(frame, GL_RGBA32F));
+      },
+      [&kit, projection, out](PassContext& ctx) {
+        gl::Program& p =
+            ctx.programs.get({{"common/fullscreen.vert", "shading/light_depth.frag"}, {projection}, "light-depth-view"});
+        ctx.beginFullscreen(out, {out});
+        p.use();
+        kit.bindRawDepth(ctx, p, "uDepth", 0);
+        const LightSpace ls = shadowLightSpace(ctx.scene, ctx.params);
+        p.set("uNear", ls.znear).set("uFar", ls.zfar);
+        ctx.common.drawFullscreen();
+      });
+}
+
+std::vector<glm::vec2> ShadowFilterKit::taps(Pattern pattern, int count) {
+  count = std::clamp(count, 1, kMaxTaps);
+  if (pattern == Pattern::Grid) return gridPattern(count);
+  return poissonDiskPattern(count, 7);
+}
+
+void ShadowFilterKit::ensure() {
+  if (m_noise) return;
+  gl::TextureDesc d;
+  d.format = GL_R16F;
+  d.width = d.height = kNoiseSize;
+  d.wrap = GL_REPEAT;
+  m_noise = gl::Texture(d, "blue-noise");
+  const std::vector<float> noise = blueNoise(kNoiseSize, 1);
+  glTextureSubImage2D(m_noise.id(), 0, 0, 0, kNoiseSize, kNoiseSize, GL_RED, GL_FLOAT, noise.data());
+  const float border[4] = {1, 1, 1, 1};
+  m_linearCompare = gl::Sampler("shadow.linear-compare");
+  m_raw = gl::Sampler("shadow.raw-depth");
+  for (GLuint s : {m_linearCompare.id(), m_raw.id()}) {
+    glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    glSamplerParameteri(s, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    glSamplerParameterfv(s, GL_TEXTURE_BORDER_COLOR, border);
+  }
+  glSamplerParameteri(m_linearCompare.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(m_linearCompare.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(m_linearCompare.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glSamplerParameteri(m_linearCompare.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glSamplerParameteri(m_raw.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(m_raw.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(m_raw.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+}
+
+void ShadowFilterKit::bindFilter(gl::Program& p, const std::vector<glm::vec2>& taps, bool rotate, bool receiverPlane,
+                                 bool linearCompare) {
+  ensure();
+  m_noise.bind(3);
+  if (linearCompare) glBindSampler(2, m_linearCompare.id());
+  p.set("uTaps", taps)
+      .set("uTapCount", int(taps.size()))
+      .set("uRotationNoise", 3)
+      .set("uRotateTaps", rotate)
+      .set("uReceiverPlaneBias", receiverPlane);
+}
+
+void ShadowFilterKit::bindRawDepth(PassContext& ctx, gl::Program& p, const char* uniform, int unit) {
+  ensure();
+  ctx.texture(kShadowDepth).bind(GLuint(unit));
+  glBindSampler(GLuint(unit), m_raw.id());
+  p.set(uniform, unit);
+}
+
+} // namespace rtlab

@@ -1,0 +1,59 @@
+// Building blocks shared by the shadow-stage techniques: a full-screen pass over the G-buffer that
+// reads the stage's depth map and writes a frame-size output, and the filtering kit (tap
+// patterns, a blue-noise rotation texture, comparison and raw-depth samplers) for
+// shaders/common/shadow_filter.glsl.
+#pragma once
+#include "gl/objects.h"
+#include "gl/program.h"
+#include "gl/texture.h"
+
+#include <glm/glm.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rtlab {
+
+class FrameGraph;
+struct PassContext;
+
+// Adds pass `name` writing `output` (format: GL_R16F for visibility, GL_RGBA32F for an "aov.*"
+// debug view). The program is fullscreen.vert + `fragment` with the light's SHADOW_PROJECTION
+// define plus `defines`; G-buffer position/geometry are bound as uPosition/uGeometry (units 0, 1)
+// and the shadow space as uShadowMap (unit 2). `bind` sets the technique's own uniforms.
+void addShadowScreenPass(FrameGraph& frame, const std::string& name, const std::string& output, GLenum format,
+                         const std::string& fragment, const std::vector<std::string>& defines,
+                         std::function<void(PassContext&, gl::Program&)> bind);
+
+class ShadowFilterKit;
+struct DebugView;
+
+// The debug view "<technique>.light_depth": the stage's depth map as linear depth, 0 at the
+// light's near plane and 1 at its far plane (2D maps fill the frame; cube maps are unwrapped).
+DebugView lightDepthView(const std::string& technique);
+void addLightDepthView(FrameGraph& frame, const std::string& view, ShadowFilterKit& kit);
+
+class ShadowFilterKit {
+public:
+  static constexpr int kMaxTaps = 64;        // shaders/common/shadow_filter.glsl uTaps[64]
+  static constexpr int kNoiseSize = 64;
+  enum class Pattern { Grid = 0, Poisson = 1, PoissonRotated = 2 };
+
+  // Taps in the unit disk (or square for the grid), at most kMaxTaps.
+  static std::vector<glm::vec2> taps(Pattern pattern, int count);
+  // Sets uTaps/uTapCount/uRotateTaps/uReceiverPlaneBias and binds the blue noise (unit 3). With
+  // `linearCompare` the map (unit 2) is sampled with bilinear comparison (2x2 hardware PCF).
+  void bindFilter(gl::Program& program, const std::vector<glm::vec2>& taps, bool rotate, bool receiverPlane,
+                  bool linearCompare);
+  // Binds the map without comparison (raw depths, for blocker searches) to `unit`.
+  void bindRawDepth(PassContext& ctx, gl::Program& program, const char* uniform, int unit);
+  std::size_t ownedBytes() const { return m_noise ? m_noise.desc().bytes() : 0; }
+
+private:
+  void ensure();
+  gl::Texture m_noise;
+  gl::Sampler m_linearCompare, m_raw;
+};
+
+} // namespace rtlab

@@ -1,0 +1,89 @@
+// PCSS — Fernando 2005, "Percentage-closer soft shadows" (NVIDIA / SIGGRAPH sketch).
+// Approximates the visibility of light 0 as an area light: a blocker search estimates the mean
+// occluder depth, similar triangles give the penumbra width from the light's size (light0.radius
+// for spot/point lights, light0.angle for directional lights), and PCF filters with that width —
+// so shadows harden towards contacts.
+#include "frame/frame_graph.h"
+#include "frame/registry.h"
+#include "params/param_set.h"
+#include "shading/base_passes.h"
+#include "shading/shadow_pass.h"
+
+#include <cmath>
+
+namespace rtlab {
+namespace {
+
+// The light size PCSS uses: disk radius for spot/point lights, tan(angular radius) for directional.
+float lightSize(const Light& light) {
+  if (light.type == LightType::Directional) return std::tan(glm::radians(light.angle));
+  return light.radius;
+}
+
+class Pcss final : public Technique {
+public:
+  static TechniqueInfo staticInfo() {
+    TechniqueInfo info;
+    info.id = "pcss";
+    info.stage = "shadow";
+    info.title = "Percentage-closer soft shadows (Fernando 2005)";
+    info.summary = "Blocker search, penumbra from similar triangles and the light's size, then PCF of that width";
+    info.params = {
+        ParamSpec::integer("pcss.blocker_samples", "Blocker samples", 16, 1, 64).logScale().withUnit("taps")
+            .withHelp("Depth taps of the blocker search"),
+        ParamSpec::integer("pcss.filter_samples", "Filter samples", 32, 1, 64).logScale().withUnit("taps")
+            .withHelp("Depth comparisons of the filtering step"),
+        ParamSpec::real("pcss.min_penumbra", "Min penumbra", 1.0, 0.0, 64.0).withUnit("texels")
+            .withHelp("Smallest filter radius (0 keeps contacts and zero-size lights hard)"),
+        ParamSpec::real("pcss.max_penumbra", "Max penumbra", 32.0, 1.0, 64.0).withUnit("texels")
+            .withHelp("Largest filter radius"),
+        ParamSpec::real("pcss.max_search", "Max search radius", 64.0, 1.0, 128.0).withUnit("texels")
+            .withHelp("Cap of the blocker-search radius derived from the light's size"),
+        ParamSpec::boolean("pcss.rotate", "Rotate per pixel", true)
+            .withHelp("Rotate the Poisson taps per pixel by blue noise (noise instead of banding)"),
+        ParamSpec::boolean("pcss.receiver_plane_bias", "Receiver-plane bias", true)
+            .withHelp("Compare filter taps against the receiver's plane at the tap's offset"),
+    };
+    info.debugViews = {
+        lightDepthView("pcss"),
+        {"pcss.blocker_depth", 1, "mean blocker depth, 0 at the light's near plane .. 1 at its far plane; 0 = no blocker"},
+        {"pcss.penumbra", 1, "filter radius as a fraction of pcss.max_penumbra"},
+    };
+    info.showcaseScene = "contact";
+    return info;
+  }
+  const TechniqueInfo& info() const override { return m_info; }
+
+  void setup(FrameGraph& frame) override {
+    const ParamSet& params = frame.params();
+    const auto filterTaps = ShadowFilterKit::taps(ShadowFilterKit::Pattern::Poisson, params.getInt("pcss.filter_samples"));
+    const auto searchTaps = ShadowFilterKit::taps(ShadowFilterKit::Pattern::Poisson, params.getInt("pcss.blocker_samples"));
+    auto bind = [this, filterTaps, searchTaps](PassContext& ctx, gl::Program& p) {
+      m_kit.bindFilter(p, filterTaps, ctx.params.getBool("pcss.rotate"), ctx.params.getBool("pcss.receiver_plane_bias"), false);
+      m_kit.bindRawDepth(ctx, p, "uShadowRaw", 4);
+      p.set("uSearchTaps", searchTaps)
+          .set("uSearchTapCount", int(searchTaps.size()))
+          .set("uLightSize", lightSize(ctx.scene.lights.at(0)))
+          .set("uMinPenumbra", ctx.params.getFloat("pcss.min_penumbra"))
+          .set("uMaxPenumbra", std::max(ctx.params.getFloat("pcss.max_penumbra"), ctx.params.getFloat("pcss.min_penumbra")))
+          .set("uMaxSearch", ctx.params.getFloat("pcss.max_search"));
+    };
+    addShadowScreenPass(frame, "pcss.visibility", "visibility", GL_R16F, "pcss/visibility.frag", {"OUTPUT 0"}, bind);
+    addShadowScreenPass(frame, "pcss.blocker_depth", aovResource("pcss.blocker_depth"), GL_RGBA32F, "pcss/visibility.frag",
+                        {"OUTPUT 1"}, bind);
+    addShadowScreenPass(frame, "pcss.penumbra", aovResource("pcss.penumbra"), GL_RGBA32F, "pcss/visibility.frag",
+                        {"OUTPUT 2"}, bind);
+    addLightDepthView(frame, "pcss.light_depth", m_kit);
+  }
+  std::size_t ownedBytes() const override { return m_kit.ownedBytes(); }
+
+private:
+  TechniqueInfo m_info = staticInfo();
+  ShadowFilterKit m_kit;
+};
+
+} // namespace
+
+void registerTechnique_pcss(TechniqueRegistry& registry) { registerTechniqueType<Pcss>(registry); }
+
+} // namespace rtlab
