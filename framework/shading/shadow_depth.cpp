@@ -7,6 +7,8 @@
 #include "shading/scene_gpu.h"
 #include "util/error.h"
 
+#include <cmath>
+
 namespace rtlab {
 namespace {
 
@@ -73,9 +75,15 @@ void addShadowDepthPass(FrameGraph& frame) {
 
 void bindShadowSpace(PassContext& ctx, gl::Program& p, int unit) {
   const LightSpace ls = shadowLightSpace(ctx.scene, ctx.params);
-  ctx.texture(kShadowDepth).bind(GLuint(unit));
-  p.set("uShadowMap", unit)
-      .set("uLightViewProj", ls.viewProj[0])
+  if (unit >= 0) {
+    ctx.texture(kShadowDepth).bind(GLuint(unit));
+    p.set("uShadowMap", unit);
+  }
+  const Light& light = ctx.scene.lights.at(0);
+  // PCSS/VSSM/MSM light size: disk radius (spot, point) or tan(angular radius) (directional).
+  const float lightSize = light.type == LightType::Directional ? std::tan(glm::radians(light.angle)) : light.radius;
+  p.set("uLightViewProj", ls.viewProj[0])
+      .set("uLightSize", lightSize)
       .set("uLightPosition", ls.position)
       .set("uLightDirection", ls.direction)
       .set("uLightNear", ls.znear)

@@ -19,7 +19,8 @@ inline const std::string kShadowDepth = "shadow.depth";
 LightSpace shadowLightSpace(const Scene& scene, const ParamSet& params);
 // Adds the "shadow.depth" pass (once per frame; later calls do nothing).
 void addShadowDepthPass(FrameGraph& frame);
-// Sets the uniforms of shaders/common/shadow_space.glsl and binds the map to `unit`.
+// Sets the uniforms of shaders/common/shadow_space.glsl (light 0's size too) and binds the map
+// to `unit` (none when unit < 0).
 void bindShadowSpace(PassContext& ctx, gl::Program& program, int unit);
 // "SHADOW_PROJECTION <n>" define for shadow_space.glsl.
 std::string shadowProjectionDefine(const LightSpace& ls);

@@ -13,30 +13,51 @@
 
 namespace rtlab {
 
-void addShadowScreenPass(FrameGraph& frame, const std::string& name, const std::string& output, GLenum format,
-                         const std::string& fragment, const std::vector<std::string>& defines,
-                         std::function<void(PassContext&, gl::Program&)> bind) {
-  addShadowDepthPass(frame);
-  std::vector<std::string> allDefines = {shadowProjectionDefine(shadowLightSpace(frame.scene(), frame.params()))};
-  allDefines.insert(allDefines.end(), defines.begin(), defines.end());
-  frame.addPass(name,
+void addShadowScreenPass(FrameGraph& frame, const ShadowScreenPass& pass) {
+  if (pass.depthMap) addShadowDepthPass(frame);
+  std::vector<std::string> defines = {shadowProjectionDefine(shadowLightSpace(frame.scene(), frame.params()))};
+  defines.insert(defines.end(), pass.defines.begin(), pass.defines.end());
+  frame.addPass(pass.name,
       [&](PassBuilder& b) {
-        b.read(kShadowDepth);
+        if (pass.depthMap) b.read(kShadowDepth);
+        for (const auto& r : pass.reads) b.read(r);
         b.read(res::kPosition);
         b.read(res::kGeometry);
-        b.write(output, frameTexture(frame, format));
+        b.write(pass.output, frameTexture(frame, pass.format));
       },
-      [=](PassContext& ctx) {
-        gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", fragment}, allDefines, name});
-        ctx.beginFullscreen(name, {output});
+      [pass, defines](PassContext& ctx) {
+        gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", pass.fragment}, defines, pass.name});
+        ctx.beginFullscreen(pass.name, {pass.output});
         p.use();
         ctx.texture(res::kPosition).bind(0);
         ctx.texture(res::kGeometry).bind(1);
         p.set("uPosition", 0).set("uGeometry", 1);
-        bindShadowSpace(ctx, p, 2);
-        if (bind) bind(ctx, p);
+        bindShadowSpace(ctx, p, pass.depthMap ? 2 : -1);
+        if (pass.bind) pass.bind(ctx, p);
         ctx.common.drawFullscreen();
       });
+}
+
+std::vector<DebugView> softShadowDebugViews(const std::string& technique) {
+  return {{technique + ".blocker_depth", 1,
+           "mean blocker depth, 0 at the light's near plane .. 1 at its far plane; 0 = no blocker"},
+          {technique + ".penumbra", 1, "filter radius as a fraction of " + technique + ".max_penumbra"}};
+}
+
+void addSoftShadowPasses(FrameGraph& frame, const std::string& technique, ShadowScreenPass pass) {
+  const std::vector<std::string> baseDefines = pass.defines;
+  const std::pair<std::string, std::string> outputs[3] = {
+      {"visibility", technique + ".visibility"},
+      {aovResource(technique + ".blocker_depth"), technique + ".blocker_depth"},
+      {aovResource(technique + ".penumbra"), technique + ".penumbra"}};
+  for (int i = 0; i < 3; ++i) {
+    pass.output = outputs[i].first;
+    pass.name = outputs[i].second;
+    pass.format = i == 0 ? GL_R16F : GL_RGBA32F;
+    pass.defines = baseDefines;
+    pass.defines.push_back("OUTPUT " + std::to_string(i));
+    addShadowScreenPass(frame, pass);
+  }
 }
 
 DebugView lightDepthView(const std::string& technique) {

@@ -18,13 +18,27 @@ namespace rtlab {
 class FrameGraph;
 struct PassContext;
 
-// Adds pass `name` writing `output` (format: GL_R16F for visibility, GL_RGBA32F for an "aov.*"
-// debug view). The program is fullscreen.vert + `fragment` with the light's SHADOW_PROJECTION
-// define plus `defines`; G-buffer position/geometry are bound as uPosition/uGeometry (units 0, 1)
-// and the shadow space as uShadowMap (unit 2). `bind` sets the technique's own uniforms.
-void addShadowScreenPass(FrameGraph& frame, const std::string& name, const std::string& output, GLenum format,
-                         const std::string& fragment, const std::vector<std::string>& defines,
-                         std::function<void(PassContext&, gl::Program&)> bind);
+// A full-screen pass of a shadow technique over the G-buffer: fullscreen.vert + `fragment` with
+// the light's SHADOW_PROJECTION define plus `defines`; G-buffer position/geometry bound as
+// uPosition/uGeometry (units 0, 1); the shadow-space uniforms of shaders/common/shadow_space.glsl
+// set, and with `depthMap` the stage's map bound as uShadowMap (unit 2). `bind` sets the
+// technique's own uniforms and textures (units 3 and up).
+struct ShadowScreenPass {
+  std::string name;
+  std::string output;        // "visibility", or "aov.<id>.<view>" for a debug view
+  GLenum format = GL_R16F;   // GL_RGBA32F for debug views
+  std::string fragment;
+  std::vector<std::string> defines;
+  bool depthMap = true;      // reads the shadow stage's "shadow.depth"
+  std::vector<std::string> reads; // further frame resources (e.g. a moment table)
+  std::function<void(PassContext&, gl::Program&)> bind;
+};
+void addShadowScreenPass(FrameGraph& frame, const ShadowScreenPass& pass);
+
+// Soft-shadow techniques (PCSS, VSSM, MSM) write three outputs from one shader with OUTPUT 0/1/2:
+// "visibility", and the debug views "<id>.blocker_depth" and "<id>.penumbra".
+std::vector<struct DebugView> softShadowDebugViews(const std::string& technique);
+void addSoftShadowPasses(FrameGraph& frame, const std::string& technique, ShadowScreenPass pass);
 
 class ShadowFilterKit;
 struct DebugView;

@@ -92,3 +92,29 @@ float shadowMapWidth(float z) {
   return z * uTexelScale * uMapResolution;
 #endif
 }
+
+// Soft-shadow geometry for an area light (PCSS, VSSM, MSM), with uLightSize the disk radius in
+// scene units at the light (spot, point) or tan(angular radius) for a directional light.
+uniform float uLightSize;
+
+// Radius (texels) of the map region through which a receiver at linear depth zR sees the light,
+// taken at the near plane where it is widest (Fernando 2005: grows with zR).
+float shadowSearchTexels(float zR) {
+#if SHADOW_PROJECTION == 0
+  float world = (zR - uLightNear) * uLightSize;
+#else
+  float world = uLightSize * (zR - uLightNear) / max(zR, 1e-6);
+#endif
+  return world / shadowMapWidth(uLightNear) * uMapResolution;
+}
+
+// Penumbra half-width (texels at the receiver) from similar triangles, blocker at linear depth zB.
+float shadowPenumbraTexels(float zR, float zB) {
+  float dz = max(zR - zB, 0.0);
+#if SHADOW_PROJECTION == 0
+  float world = dz * uLightSize;
+#else
+  float world = dz * uLightSize / max(zB, 1e-6);
+#endif
+  return world / shadowMapWidth(zR) * uMapResolution;
+}

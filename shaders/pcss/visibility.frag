@@ -19,7 +19,6 @@ uniform sampler2D uShadowRaw;
 #endif
 uniform vec2 uSearchTaps[64];
 uniform int uSearchTapCount;
-uniform float uLightSize;     // disk radius (scene units), or tan(angular radius) for directional
 uniform float uMinPenumbra;   // texels
 uniform float uMaxPenumbra;   // texels
 uniform float uMaxSearch;     // texels
@@ -74,12 +73,7 @@ void main() {
   bool inside = receiver(q, coord, zR);
 
   // 1. Blocker search over the region the light subtends, seen from the receiver, at the near plane.
-#if SHADOW_PROJECTION == 0
-  float searchWorld = (zR - uLightNear) * uLightSize;
-#else
-  float searchWorld = uLightSize * (zR - uLightNear) / max(zR, 1e-6);
-#endif
-  float searchTexels = clamp(searchWorld / shadowMapWidth(uLightNear) * uMapResolution, 1.0, uMaxSearch);
+  float searchTexels = clamp(shadowSearchTexels(zR), 1.0, uMaxSearch);
   float zRef = receiverDepth01(coord, zR) - uConstantBias;
   mat2 rotation = tapRotation();
   float blockerSum = 0.0;
@@ -98,13 +92,7 @@ void main() {
   float zB = 0.0;
   if (blockers > 0) {
     zB = blockerSum / float(blockers);
-    float dz = max(zR - zB, 0.0);
-#if SHADOW_PROJECTION == 0
-    float penumbraWorld = dz * uLightSize;
-#else
-    float penumbraWorld = dz * uLightSize / max(zB, 1e-6);
-#endif
-    radius = penumbraWorld / shadowMapWidth(zR) * uMapResolution;
+    radius = shadowPenumbraTexels(zR, zB);
   }
   radius = clamp(radius, uMinPenumbra, uMaxPenumbra);
   // 3. Filter (every lane, for the derivatives of the receiver-plane bias).

@@ -38,12 +38,16 @@ public:
   void setup(FrameGraph& frame) override {
     const auto pattern = ShadowFilterKit::Pattern(frame.params().getEnum("pcf.pattern"));
     const auto taps = ShadowFilterKit::taps(pattern, frame.params().getInt("pcf.samples"));
-    addShadowScreenPass(frame, "pcf.visibility", "visibility", GL_R16F, "pcf/visibility.frag", {},
-        [this, taps, pattern](PassContext& ctx, gl::Program& p) {
-          m_kit.bindFilter(p, taps, pattern == ShadowFilterKit::Pattern::PoissonRotated,
-                           ctx.params.getBool("pcf.receiver_plane_bias"), ctx.params.getBool("pcf.hardware_2x2"));
-          p.set("uRadius", ctx.params.getFloat("pcf.radius"));
-        });
+    ShadowScreenPass pass;
+    pass.name = "pcf.visibility";
+    pass.output = "visibility";
+    pass.fragment = "pcf/visibility.frag";
+    pass.bind = [this, taps, pattern](PassContext& ctx, gl::Program& p) {
+      m_kit.bindFilter(p, taps, pattern == ShadowFilterKit::Pattern::PoissonRotated,
+                       ctx.params.getBool("pcf.receiver_plane_bias"), ctx.params.getBool("pcf.hardware_2x2"));
+      p.set("uRadius", ctx.params.getFloat("pcf.radius"));
+    };
+    addShadowScreenPass(frame, pass);
     addLightDepthView(frame, "pcf.light_depth", m_kit);
   }
   std::size_t ownedBytes() const override { return m_kit.ownedBytes(); }

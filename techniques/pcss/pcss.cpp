@@ -6,19 +6,11 @@
 #include "frame/frame_graph.h"
 #include "frame/registry.h"
 #include "params/param_set.h"
-#include "shading/base_passes.h"
 #include "shading/shadow_pass.h"
 
-#include <cmath>
 
 namespace rtlab {
 namespace {
-
-// The light size PCSS uses: disk radius for spot/point lights, tan(angular radius) for directional.
-float lightSize(const Light& light) {
-  if (light.type == LightType::Directional) return std::tan(glm::radians(light.angle));
-  return light.radius;
-}
 
 class Pcss final : public Technique {
 public:
@@ -44,11 +36,8 @@ public:
         ParamSpec::boolean("pcss.receiver_plane_bias", "Receiver-plane bias", true)
             .withHelp("Compare filter taps against the receiver's plane at the tap's offset"),
     };
-    info.debugViews = {
-        lightDepthView("pcss"),
-        {"pcss.blocker_depth", 1, "mean blocker depth, 0 at the light's near plane .. 1 at its far plane; 0 = no blocker"},
-        {"pcss.penumbra", 1, "filter radius as a fraction of pcss.max_penumbra"},
-    };
+    info.debugViews = softShadowDebugViews("pcss");
+    info.debugViews.push_back(lightDepthView("pcss"));
     info.showcaseScene = "contact";
     return info;
   }
@@ -63,16 +52,14 @@ public:
       m_kit.bindRawDepth(ctx, p, "uShadowRaw", 4);
       p.set("uSearchTaps", searchTaps)
           .set("uSearchTapCount", int(searchTaps.size()))
-          .set("uLightSize", lightSize(ctx.scene.lights.at(0)))
           .set("uMinPenumbra", ctx.params.getFloat("pcss.min_penumbra"))
           .set("uMaxPenumbra", std::max(ctx.params.getFloat("pcss.max_penumbra"), ctx.params.getFloat("pcss.min_penumbra")))
           .set("uMaxSearch", ctx.params.getFloat("pcss.max_search"));
     };
-    addShadowScreenPass(frame, "pcss.visibility", "visibility", GL_R16F, "pcss/visibility.frag", {"OUTPUT 0"}, bind);
-    addShadowScreenPass(frame, "pcss.blocker_depth", aovResource("pcss.blocker_depth"), GL_RGBA32F, "pcss/visibility.frag",
-                        {"OUTPUT 1"}, bind);
-    addShadowScreenPass(frame, "pcss.penumbra", aovResource("pcss.penumbra"), GL_RGBA32F, "pcss/visibility.frag",
-                        {"OUTPUT 2"}, bind);
+    ShadowScreenPass pass;
+    pass.fragment = "pcss/visibility.frag";
+    pass.bind = bind;
+    addSoftShadowPasses(frame, "pcss", pass);
     addLightDepthView(frame, "pcss.light_depth", m_kit);
   }
   std::size_t ownedBytes() const override { return m_kit.ownedBytes(); }

@@ -24,7 +24,11 @@ public:
   const TechniqueInfo& info() const override { return m_info; }
 
   void setup(FrameGraph& frame) override {
-    addShadowScreenPass(frame, "shadow_map.visibility", "visibility", GL_R16F, "shadow_map/visibility.frag", {}, nullptr);
+    ShadowScreenPass pass;
+    pass.name = "shadow_map.visibility";
+    pass.output = "visibility";
+    pass.fragment = "shadow_map/visibility.frag";
+    addShadowScreenPass(frame, pass);
     addLightDepthView(frame, "shadow_map.light_depth", m_kit);
   }
   std::size_t ownedBytes() const override { return m_kit.ownedBytes(); }

@@ -4,6 +4,8 @@
 // PCSS shadows widen as the light grows (more partially lit pixels).
 #include "render_fixture.h"
 
+#include "util/error.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -86,6 +88,60 @@ TEST(Pcss, NoBlockerIsFullyLit) {
   int x = 0, y = 0;
   ASSERT_TRUE(projectToPixel(f, glm::vec3(0.0f, 0.0f, 4.0f), x, y));
   EXPECT_EQ(v.at(x, y, 0), 1.0f);
+}
+
+} // namespace
+} // namespace rtlab
+
+namespace rtlab {
+namespace {
+
+// Soft techniques (PCSS, VSSM, MSM) share two properties: a larger light widens penumbrae, and
+// penumbrae widen as the blocker rises above the receiver (contact hardening).
+class SoftShadow : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SoftShadow, LargerLightWidensPenumbrae) {
+  const Image small = visibility("contact", GetParam(), {"light0.radius=0.05"});
+  const Image large = visibility("contact", GetParam(), {"light0.radius=0.5"});
+  EXPECT_GT(partialPixels(large), partialPixels(small) + partialPixels(small) / 2);
+}
+
+TEST_P(SoftShadow, PenumbraWidensAsTheBlockerRises) {
+  // The floating box alone over open ground, at two heights; everything else is removed so only
+  // its shadow is counted.
+  auto frameAt = [&](float lift) {
+    TestFrame f = makeTestFrame("contact", GetParam(), {"light0.radius=0.3"}, kSize, kSize);
+    std::vector<Instance> kept;
+    for (const auto& inst : f.scene.instances) {
+      const std::string& name = f.scene.meshes[std::size_t(inst.mesh)].name;
+      if (name == "ground" || name == "floating") kept.push_back(inst);
+      if (name == "floating") kept.back().transform[3].y += lift;
+    }
+    f.scene.instances = kept;
+    f.scene.name = "contact-floating-" + std::to_string(lift); // own renderer: the geometry differs
+    return f;
+  };
+  TestFrame low = frameAt(-0.9f), high = frameAt(0.8f);
+  TestRender a = renderTestFrame(low, {"visibility"});
+  const std::size_t lowPartial = partialPixels(a.renderer->readAov("visibility"));
+  TestRender b = renderTestFrame(high, {"visibility"});
+  const std::size_t highPartial = partialPixels(b.renderer->readAov("visibility"));
+  EXPECT_GT(highPartial, lowPartial + lowPartial / 4) << "low " << lowPartial << ", high " << highPartial;
+}
+
+INSTANTIATE_TEST_SUITE_P(Techniques, SoftShadow, ::testing::Values("pcss", "vssm", "msm"));
+
+TEST(MomentShadows, PointLightIsRefusedWithAUsageError) {
+  TestFrame f = makeTestFrame("contact", "vssm", {}, 32, 32);
+  f.scene.lights[0].type = LightType::Point;
+  f.scene.name = "contact-point-vssm";
+  try {
+    renderTestFrame(f, {"visibility"});
+    FAIL() << "expected a usage error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::Usage);
+    EXPECT_NE(std::string(e.what()).find("vssm"), std::string::npos);
+  }
 }
 
 } // namespace

@@ -1,0 +1,116 @@
+#include "shading/moment_map.h"
+
+#include "frame/frame_graph.h"
+#include "gl/program_cache.h"
+#include "params/param_set.h"
+#include "shading/base_passes.h"
+#include "shading/gpu_common.h"
+#include "shading/scene_gpu.h"
+#include "shading/shadow_depth.h"
+#include "util/error.h"
+
+#include <algorithm>
+
+namespace rtlab {
+
+std::string momentSatResource(const std::string& technique) { return technique + ".sat"; }
+
+void addMomentMapPasses(FrameGraph& frame, const MomentMapConfig& config) {
+  const LightSpace ls = shadowLightSpace(frame.scene(), frame.params());
+  if (ls.projection == LightProjection::Cube)
+    usageError(config.technique + " supports directional lights and spot lights whose cone fits in 120 degrees; light 0 "
+               "needs a cube map (use shadow_map, pcf or pcss)");
+  const int size = frame.params().getInt("shadow.resolution");
+  const std::string moments = config.technique + ".moments";
+  const std::string depth = config.technique + ".moments_depth";
+  const std::string sat = momentSatResource(config.technique);
+  gl::TextureDesc momentDesc;
+  momentDesc.format = config.format;
+  momentDesc.width = momentDesc.height = size;
+  gl::TextureDesc depthDesc = momentDesc;
+  depthDesc.format = GL_DEPTH_COMPONENT24;
+  gl::TextureDesc satDesc = momentDesc;
+  satDesc.format = GL_RGBA32F;
+  std::vector<std::string> defines = {"MOMENTS " + std::to_string(config.moments)};
+  if (config.optimized) defines.push_back("OPTIMIZED");
+
+  frame.addPass(moments,
+      [&](PassBuilder& b) {
+        b.write(moments, momentDesc);
+        b.write(depth, depthDesc);
+      },
+      [=](PassContext& ctx) {
+        gl::Program& p = ctx.programs.get({{"shading/moments.vert", "shading/moments.frag"}, defines, moments});
+        const gl::Framebuffer& fbo = ctx.framebuffer(moments, {moments}, depth);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+        glViewport(0, 0, size, size);
+        // Empty texels (no geometry) hold the far plane: z = 1.
+        const float far[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+        float clear[4] = {1.0f, 1.0f, 0.0f, 0.0f};
+        if (config.moments == 4 && !config.optimized) std::copy(far, far + 4, clear);
+        if (config.optimized) {
+          // The optimized transform of z = 1: the column sums of the matrix plus the offset.
+          clear[0] = float(-2.07224649 + 32.23703778 - 68.571074599 + 39.3703274134 + 0.035955884801);
+          clear[1] = float(13.7948857237 - 59.4683975703 + 82.0359750338 - 35.364903257);
+          clear[2] = float(0.105877704 - 1.9077466311 + 9.3496555107 - 6.6543490743);
+          clear[3] = float(9.7924062118 - 33.7652110555 + 47.9456096605 - 23.9728048165);
+        }
+        glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
+        const float one = 1.0f;
+        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        const LightSpace light = shadowLightSpace(ctx.scene, ctx.params);
+        p.set("uViewProj", light.viewProj[0])
+            .set("uLightPosition", light.position)
+            .set("uLightDirection", light.direction)
+            .set("uLightNear", light.znear)
+            .set("uLightFar", light.zfar);
+        ctx.sceneGpu.draw(p, SceneGpu::Filter::Opaque, false);
+      });
+
+  frame.addPass(sat,
+      [&](PassBuilder& b) {
+        b.read(moments);
+        b.write(sat, satDesc);
+      },
+      [=](PassContext& ctx) {
+        const glm::vec4 offset(config.satOffset ? 0.5f : 0.0f);
+        glBindImageTexture(0, ctx.texture(sat).id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+        for (int axis = 0; axis < 2; ++axis) {
+          gl::Program& p = ctx.programs.get({{"shading/sat.comp"}, {"AXIS " + std::to_string(axis)}, "sat"});
+          p.use();
+          ctx.texture(moments).bind(0);
+          p.set("uInput", 0).set("uSize", size).set("uOffset", offset);
+          glDispatchCompute(GLuint((size + 63) / 64), 1, 1);
+          glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        }
+        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+      });
+}
+
+void addMomentView(FrameGraph& frame, const std::string& technique, const std::string& view) {
+  const std::string moments = technique + ".moments";
+  const std::string out = aovResource(view);
+  frame.addPass(view,
+      [&](PassBuilder& b) {
+        b.read(moments);
+        b.write(out, frameTexture(frame, GL_RGBA32F));
+      },
+      [moments, out](PassContext& ctx) {
+        // SHADOW_PROJECTION 0 shows the stored value as it is (it is already linear).
+        gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/light_depth.frag"}, {"SHADOW_PROJECTION 0"}, "moment-view"});
+        ctx.beginFullscreen(out, {out});
+        p.use();
+        ctx.texture(moments).bind(0);
+        p.set("uDepth", 0).set("uNear", 0.0f).set("uFar", 1.0f);
+        ctx.common.drawFullscreen();
+      });
+}
+
+void bindMomentSat(PassContext& ctx, gl::Program& p, const MomentMapConfig& config, int unit) {
+  ctx.texture(momentSatResource(config.technique)).bind(GLuint(unit));
+  p.set("uSat", unit).set("uSatOffset", glm::vec4(config.satOffset ? 0.5f : 0.0f));
+}
+
+} // namespace rtlab

@@ -1,0 +1,66 @@
+#version 450 core
+// Moment shadow mapping (Peters & Klein 2015, Hamburger 4MSM) with soft shadows: four moments of
+// normalized linear light depth averaged over a box from a summed-area table. The box comes from
+// a PCSS-style blocker estimate (the two-moment estimate of Yang et al. 2010 on the first two
+// moments, then similar triangles), so shadows harden at contacts; visibility is 1 minus the
+// 4MSM shadow intensity over that box. OUTPUT: 0 visibility, 1 blocker depth, 2 filter radius.
+#include "../common/shadow_space.glsl"
+#include "../common/moments.glsl"
+
+in vec2 vUv;
+uniform sampler2D uPosition;
+uniform sampler2D uGeometry;
+uniform float uMomentBias;
+uniform float uMinPenumbra;
+uniform float uMaxPenumbra;
+uniform float uMaxSearch;
+
+layout(location = 0) out vec4 oValue;
+
+#ifdef OPTIMIZED
+// Inverse of the optimized quantization (Peters & Klein 2015, section 4.3).
+const mat4 kRestore = mat4(0.2227744146, 0.1549679261, 0.1451988946, 0.163127443,
+                           0.0771972861, 0.1394629426, 0.2120202157, 0.2591432266,
+                           0.7926986636, 0.7963415838, 0.7258694464, 0.6539092497,
+                           0.0319417555, -0.1722823173, -0.2758014811, -0.3376131734);
+#endif
+
+vec4 filteredMoments(vec2 uv, float radius) {
+  vec4 m = boxMoments(uv, radius);
+#ifdef OPTIMIZED
+  m.x -= 0.035955884801;
+  m = kRestore * m;
+#endif
+  return m;
+}
+
+void main() {
+  ivec2 px = ivec2(gl_FragCoord.xy);
+  vec4 geometry = texelFetch(uGeometry, px, 0);
+  float mask = geometry.w < 0.5 ? 0.0 : 1.0;
+  vec3 q = shadowReceiver(texelFetch(uPosition, px, 0).xyz, mask > 0.0 ? normalize(geometry.xyz) : vec3(0.0));
+  vec3 coord;
+  bool inside = shadowCoord2D(q, coord);
+  float zR = dot(q - uLightPosition, uLightDirection);
+  float t = (zR - uLightNear) / (uLightFar - uLightNear) - uConstantBias;
+
+  float visibility = 1.0, blockerShown = 0.0, radius = 0.0;
+  if (inside && mask > 0.0) {
+    float search = clamp(shadowSearchTexels(zR), 1.0, uMaxSearch);
+    vec4 m = filteredMoments(coord.xy, search);
+    float unoccluded = chebyshevUpperBound(m.xy, t, 1e-7);
+    if (unoccluded < 0.99) {
+      float zOcc = clamp((m.x - unoccluded * t) / (1.0 - unoccluded), 0.0, t);
+      radius = clamp(shadowPenumbraTexels(zR, uLightNear + zOcc * (uLightFar - uLightNear)), uMinPenumbra, uMaxPenumbra);
+      visibility = 1.0 - hamburger4Msm(filteredMoments(coord.xy, radius), t, uMomentBias);
+      blockerShown = zOcc;
+    }
+  }
+#if OUTPUT == 1
+  oValue = vec4(vec3(blockerShown * mask), mask);
+#elif OUTPUT == 2
+  oValue = vec4(vec3(radius / max(uMaxPenumbra, 1e-6) * mask), mask);
+#else
+  oValue = vec4(visibility * mask);
+#endif
+}

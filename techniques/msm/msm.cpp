@@ -1,0 +1,75 @@
+// MSM — Peters & Klein 2015, "Moment shadow mapping" (Hamburger 4MSM), with soft shadows: four
+// depth moments averaged over a box from a summed-area table, the box sized by a PCSS-style
+// blocker estimate and the light's size. The 4-moment bound leaks much less light than VSSM's
+// 2-moment Chebyshev bound where occluders overlap at several depths.
+#include "frame/frame_graph.h"
+#include "frame/registry.h"
+#include "params/param_set.h"
+#include "shading/moment_map.h"
+#include "shading/shadow_pass.h"
+
+namespace rtlab {
+namespace {
+
+class Msm final : public Technique {
+public:
+  static TechniqueInfo staticInfo() {
+    TechniqueInfo info;
+    info.id = "msm";
+    info.stage = "shadow";
+    info.title = "Moment shadow mapping (Peters & Klein 2015)";
+    info.summary = "Hamburger 4-moment bound over a box from a summed-area table, sized by a blocker estimate";
+    info.params = {
+        ParamSpec::choice("msm.format", "Moment format", {"rgba32f", "rgba16f_optimized"}, 0).withFlags(kParamRealloc | kParamRecompile)
+            .withHelp("32-bit float moments, or 16-bit moments with the paper's optimized quantization transform"),
+        ParamSpec::real("msm.moment_bias", "Moment bias", 3e-5, 1e-7, 1e-1).logScale()
+            .withHelp("Moments are pulled towards those of a uniform depth distribution by this much (alpha), keeping the Hankel matrix invertible"),
+        ParamSpec::boolean("msm.sat_offset", "Offset before summing", true)
+            .withHelp("Subtract 0.5 from the moments before building the summed-area table"),
+        ParamSpec::real("msm.min_penumbra", "Min penumbra", 1.0, 0.0, 64.0).withUnit("texels")
+            .withHelp("Smallest filter half-width"),
+        ParamSpec::real("msm.max_penumbra", "Max penumbra", 64.0, 1.0, 256.0).withUnit("texels")
+            .withHelp("Largest filter half-width"),
+        ParamSpec::real("msm.max_search", "Max search radius", 64.0, 1.0, 256.0).withUnit("texels")
+            .withHelp("Cap of the blocker-search half-width derived from the light's size"),
+    };
+    info.debugViews = softShadowDebugViews("msm");
+    info.debugViews.push_back({"msm.moments", 1, "first channel of the moment map as stored (z, or its optimized transform)"});
+    return info;
+  }
+  const TechniqueInfo& info() const override { return m_info; }
+
+  void setup(FrameGraph& frame) override {
+    const bool optimized = frame.params().getEnumName("msm.format") == "rgba16f_optimized";
+    MomentMapConfig config;
+    config.technique = "msm";
+    config.moments = 4;
+    config.format = optimized ? GL_RGBA16F : GL_RGBA32F;
+    config.optimized = optimized;
+    config.satOffset = frame.params().getBool("msm.sat_offset");
+    addMomentMapPasses(frame, config);
+    ShadowScreenPass pass;
+    pass.fragment = "msm/visibility.frag";
+    pass.depthMap = false;
+    pass.reads = {momentSatResource("msm")};
+    if (optimized) pass.defines.push_back("OPTIMIZED");
+    pass.bind = [config](PassContext& ctx, gl::Program& p) {
+      bindMomentSat(ctx, p, config, 3);
+      p.set("uMomentBias", ctx.params.getFloat("msm.moment_bias"))
+          .set("uMinPenumbra", ctx.params.getFloat("msm.min_penumbra"))
+          .set("uMaxPenumbra", std::max(ctx.params.getFloat("msm.max_penumbra"), ctx.params.getFloat("msm.min_penumbra")))
+          .set("uMaxSearch", ctx.params.getFloat("msm.max_search"));
+    };
+    addSoftShadowPasses(frame, "msm", pass);
+    addMomentView(frame, "msm", "msm.moments");
+  }
+
+private:
+  TechniqueInfo m_info = staticInfo();
+};
+
+} // namespace
+
+void registerTechnique_msm(TechniqueRegistry& registry) { registerTechniqueType<Msm>(registry); }
+
+} // namespace rtlab
