@@ -32,7 +32,21 @@ std::string table(const std::vector<std::string>& header, const std::vector<std:
   return s + "</tbody></table>";
 }
 
-std::string page(const std::string& title, const std::string& body) {
+std::string tableHtml(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
+  std::string s = "<table><thead><tr>";
+  for (const auto& h : header) s += "<th>" + escape(h) + "</th>";
+  s += "</tr></thead><tbody>";
+  for (const auto& row : rows) {
+    s += "<tr>";
+    for (const auto& cell : row) s += "<td>" + cell + "</td>";
+    s += "</tr>";
+  }
+  return s + "</tbody></table>";
+}
+
+std::string page(const std::string& title, const std::string& body) { return page(title, body, ""); }
+
+std::string page(const std::string& title, const std::string& body, const std::string& extraCss) {
   return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + escape(title) +
          "</title>\n<style>\n"
          "body{font-family:system-ui,sans-serif;margin:2em;max-width:1200px;color:#222}\n"
@@ -41,8 +55,8 @@ std::string page(const std::string& title, const std::string& body) {
          "td,th{border:1px solid #ddd;padding:.2em .6em;text-align:left}th{background:#f3f3f3}\n"
          "figure{display:inline-block;margin:.5em}figcaption{font-size:.85em;color:#555}\n"
          "img{max-width:100%;image-rendering:auto;border:1px solid #ccc}\n"
-         ".meta{color:#666;font-size:.9em}\n"
-         "</style></head><body>\n" +
+         ".meta{color:#666;font-size:.9em}\n" +
+         extraCss + "</style></head><body>\n" +
          body + "\n</body></html>\n";
 }
 

@@ -28,8 +28,11 @@ const char* kUsage =
     "Commands:\n"
     "  list       stages, techniques, parameters, scenes and AOVs (--json for scripts)\n"
     "  render     render headless to an image, with --stats timings\n"
+    "  reference  ground truth on the CPU (Embree) for visibility, ao or indirect\n"
     "  view       show the frame in a window\n"
     "  showcase   render every scene and technique, with stats, into a folder with index.html\n"
+    "  compare    error metrics of image B against image A (RMSE, PSNR, SSIM, FLIP)\n"
+    "  sweep      error against time over parameter grids, to results.csv and report.html\n"
     "  --version  version and git commit\n\n"
     "'rtlab <command> --help' describes a command's options.\n";
 
@@ -55,9 +58,12 @@ int main(int argc, char** argv) {
     }
     if (command == "list") return runList(argc, argv);
     if (command == "render") return runRender(argc, argv);
+    if (command == "reference") return runReference(argc, argv);
     if (command == "view") return runView(argc, argv);
     if (command == "showcase") return runShowcase(argc, argv);
-    usageError("unknown command '" + command + "' (commands: list, render, view, showcase; see 'rtlab --help')");
+    if (command == "compare") return runCompare(argc, argv);
+    if (command == "sweep") return runSweep(argc, argv);
+    usageError("unknown command '" + command + "' (commands: list, render, reference, view, showcase, compare, sweep; see 'rtlab --help')");
   } catch (const Error& e) {
     std::fprintf(stderr, "rtlab: error: %s\n", e.what());
     return int(e.code());

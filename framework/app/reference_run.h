@@ -5,6 +5,7 @@
 #include "app/frame_options.h"
 #include "frame/renderer.h"
 #include "image/image.h"
+#include "reference/reference.h"
 
 #include <string>
 
@@ -12,7 +13,11 @@ namespace rtlab {
 
 // aov: visibility | ao | indirect (Error(Usage) otherwise). ao.radius comes from frame.params;
 // the seed from frame.options.seed.
+// The renderer must hold frame.scene (Renderer::setScene); its active techniques do not matter.
 Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const std::string& aov, int spp,
                            bool progress);
+// The same, also reporting rays cast and time spent ray casting.
+Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const std::string& aov, int spp,
+                           bool progress, ReferenceStats& stats);
 
 } // namespace rtlab

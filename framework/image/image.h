@@ -45,4 +45,9 @@ void writeImage(const std::string& path, const Image& image, PngEncoding png = P
 // the mask) and PFM. Throws Error(Input) naming the path when missing, unreadable or invalid.
 Image readImage(const std::string& path);
 
+// An 8-bit PNG file in memory (the same bytes writeImage would write), for images embedded in
+// HTML reports as data: URIs. Throws Error(Internal) for an invalid image, Error(Output) if
+// encoding fails. (framework/image/png_encode.cpp)
+std::vector<unsigned char> encodePng(const Image& image, PngEncoding encoding = PngEncoding::Linear01);
+
 } // namespace rtlab

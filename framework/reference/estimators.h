@@ -1,0 +1,45 @@
+// The per-pixel Monte-Carlo estimators of the reference (docs/measuring.md): visibility of light 0,
+// ambient occlusion within a radius, one-bounce diffuse irradiance. Each takes one camera-visible
+// surface point and the pixel's sampler and counts the rays it casts.
+#pragma once
+#include "reference/embree_scene.h"
+#include "reference/sampling.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+
+namespace rtlab::reference {
+
+struct SurfacePoint {
+  glm::vec3 position;
+  glm::vec3 geometricNormal; // unit, on the side the point is seen from
+  glm::vec3 shadingNormal;   // unit, in the geometric normal's hemisphere
+  glm::vec3 toViewer;        // unit, toward the camera that saw the point (see rayStart)
+};
+
+struct EstimatorContext {
+  const Scene& scene;
+  const EmbreeScene& tracer;
+  float aoRadius = 0.5f;
+};
+
+// Fraction of light 0 visible from the point: the mean of binary shadow rays toward uniform
+// points of the light's shape; one ray for a light without extent. Points of the light below the
+// point's geometric tangent plane count as hidden (the surface itself hides them).
+float estimateVisibility(const EstimatorContext& ctx, const SurfacePoint& x, const PixelSampler& sampler,
+                         std::uint64_t& rays);
+
+// (1/pi) * integral of V_R(w) cos(theta) dw over the hemisphere of the shading normal, with
+// V_R = 1 when no surface lies within aoRadius: the mean of V_R over cosine-weighted directions.
+// Directions below the geometric tangent plane count as occluded.
+float estimateAo(const EstimatorContext& ctx, const SurfacePoint& x, const PixelSampler& sampler,
+                 std::uint64_t& rays);
+
+// E(x) = integral of L(w) cos(theta) dw with L the radiance that the first surface hit along w
+// reflects diffusely: (albedo / pi) * its direct irradiance from every light (the GPU's light
+// model, each light shadowed by one ray to a point of its shape). Cosine-weighted sampling about
+// the shading normal makes each sample albedo * E_direct(hit).
+glm::vec3 estimateIndirect(const EstimatorContext& ctx, const SurfacePoint& x, const PixelSampler& sampler,
+                           std::uint64_t& rays);
+
+} // namespace rtlab::reference

@@ -1,0 +1,137 @@
+// rtlab reference through the binary (CONTRACT.md): images with the background masked, exit codes
+// for bad input, determinism for a seed, and Ctrl-C leaving no file.
+#include "image/image.h"
+#include "process.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace fs = std::filesystem;
+using rtlab::test::runProcess;
+
+namespace {
+
+fs::path testDir(const std::string& name) {
+  fs::path d = fs::path(RTLAB_TEST_TMP) / "cli-reference" / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(CliReference, ExrHasTheSurfaceMaskAndZeroBackground) {
+  const fs::path dir = testDir("exr");
+  const fs::path out = dir / "ao.exr";
+  // contact's camera sees sky above the ground: background pixels exist.
+  const auto r = runProcess(RTLAB_BINARY, {"reference", "--scene", "contact", "--size", "48x32", "--aov", "ao", "--spp",
+                                          "4", "--out", out.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  const rtlab::Image im = rtlab::readImage(out.string());
+  EXPECT_EQ(im.width, 48);
+  EXPECT_EQ(im.height, 32);
+  EXPECT_EQ(im.channels, 1);
+  ASSERT_TRUE(im.hasMask());
+  int surface = 0, background = 0;
+  for (std::size_t i = 0; i < im.pixelCount(); ++i) {
+    EXPECT_TRUE(im.mask[i] == 0.0f || im.mask[i] == 1.0f) << im.mask[i];
+    if (im.mask[i] == 0.0f) {
+      ++background;
+      EXPECT_EQ(im.pixels[i], 0.0f);
+    } else {
+      ++surface;
+      EXPECT_GE(im.pixels[i], 0.0f);
+      EXPECT_LE(im.pixels[i], 1.0f);
+    }
+  }
+  EXPECT_GT(surface, 0);
+  EXPECT_GT(background, 0);
+}
+
+TEST(CliReference, EveryAovAndFormat) {
+  const fs::path dir = testDir("formats");
+  for (const auto& [aov, file, channels] : {std::tuple{"visibility", "v.pfm", 1}, std::tuple{"indirect", "i.pfm", 3},
+                                            std::tuple{"indirect", "i.exr", 3}, std::tuple{"visibility", "v.png", 1}}) {
+    const auto r = runProcess(RTLAB_BINARY, {"reference", "--scene", "cornell", "--size", "24x16", "--aov", aov,
+                                            "--spp", "2", "--out", (dir / file).string()});
+    ASSERT_EQ(r.exitCode, 0) << aov << " " << file << ": " << r.err;
+    if (std::string(file).ends_with(".png")) continue;
+    EXPECT_EQ(rtlab::readImage((dir / file).string()).channels, channels) << file;
+  }
+}
+
+TEST(CliReference, DefaultOutputNameAndDeterminism) {
+  const fs::path dir = testDir("default");
+  const fs::path old = fs::current_path();
+  fs::current_path(dir);
+  const std::vector<std::string> args = {"reference", "--scene", "cornell", "--size", "32x24", "--aov", "visibility",
+                                         "--spp", "8", "--seed", "5", "--frames", "3"};
+  const auto r = runProcess(RTLAB_BINARY, args);
+  fs::current_path(old);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_TRUE(fs::exists(dir / "cornell_visibility_ref.exr"));
+  // Same seed, same file; another seed, another image.
+  auto again = args;
+  again.insert(again.end(), {"--out", (dir / "again.exr").string()});
+  ASSERT_EQ(runProcess(RTLAB_BINARY, again).exitCode, 0);
+  EXPECT_EQ(slurp(dir / "cornell_visibility_ref.exr"), slurp(dir / "again.exr"));
+  auto other = again;
+  other[10] = "6"; // --seed
+  other.back() = (dir / "other.exr").string();
+  ASSERT_EQ(runProcess(RTLAB_BINARY, other).exitCode, 0);
+  EXPECT_NE(rtlab::readImage((dir / "other.exr").string()).pixels, rtlab::readImage((dir / "again.exr").string()).pixels);
+}
+
+TEST(CliReference, BadInputExitsWithTheContractCodes) {
+  const fs::path dir = testDir("bad");
+  const std::string out = (dir / "x.exr").string();
+  struct Case {
+    std::vector<std::string> args;
+    int code;
+    std::string mention;
+  };
+  const std::vector<Case> cases = {
+      {{"reference", "--out", out}, 2, "--aov"},
+      {{"reference", "--aov", "color", "--out", out}, 2, "color"},
+      {{"reference", "--aov", "depth", "--out", out}, 2, "depth"},
+      {{"reference", "--aov", "ao", "--spp", "0", "--out", out}, 2, "--spp"},
+      {{"reference", "--aov", "ao", "--spp", "65537", "--out", out}, 2, "--spp"},
+      {{"reference", "--aov", "ao", "--spp", "many", "--out", out}, 2, "many"},
+      {{"reference", "--aov", "ao", "--out", (dir / "x.tiff").string()}, 2, "x.tiff"},
+      {{"reference", "--aov", "ao", "--scene", "nosuchscene", "--out", out}, 2, "nosuchscene"},
+      {{"reference", "--aov", "ao", "--scene", (dir / "missing.gltf").string(), "--out", out}, 3, "missing.gltf"},
+      {{"reference", "--aov", "ao", "--set", "ao.radius=0", "--out", out}, 2, "ao.radius"},
+      {{"reference", "--aov", "ao", "--size", "8x8", "--out", (dir / "no" / "such" / "dir.exr").string()}, 6, "dir.exr"},
+  };
+  for (const auto& c : cases) {
+    const auto r = runProcess(RTLAB_BINARY, c.args);
+    EXPECT_EQ(r.exitCode, c.code) << c.args[1] << " " << c.args.back() << ": " << r.err;
+    EXPECT_EQ(rtlab::test::lineCount(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("rtlab: error:", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(c.mention), std::string::npos) << r.err;
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+  const auto help = runProcess(RTLAB_BINARY, {"reference", "--help"});
+  EXPECT_EQ(help.exitCode, 0);
+  EXPECT_NE(help.out.find("--spp"), std::string::npos);
+}
+
+TEST(CliReference, InterruptLeavesNoFile) {
+  // Minutes of indirect light at this size: interrupted while casting rays.
+  const fs::path dir = testDir("interrupt");
+  const auto r = runProcess(RTLAB_BINARY, {"reference", "--scene", "cornell", "--size", "1024x1024", "--aov", "indirect",
+                                          "--spp", "4096", "--out", (dir / "i.exr").string()},
+                            120, 1500);
+  EXPECT_EQ(r.exitCode, 130) << r.err;
+  EXPECT_EQ(rtlab::test::lineCount(r.err), 1) << r.err; // no progress bar: stderr is not a terminal
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+} // namespace

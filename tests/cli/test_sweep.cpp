@@ -1,0 +1,341 @@
+// rtlab sweep through the binary (docs/sweeps.md): a 3-point sweep writes 3 CSV rows and a
+// self-contained report (HTML that parses, a well-formed SVG, nothing referenced outside the
+// page); --emit-jobs, running the jobs, then --collect gives the same CSV as a direct sweep
+// (except the timing columns); the report opens in headless Chromium without console errors and
+// its screenshot is not blank (kept as RTLAB_TEST_TMP/sweep/report.png); bad input fails early.
+#include "process.h"
+
+#include "image/image.h"
+
+#include <nlohmann/json.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using rtlab::test::runProcess;
+
+namespace {
+
+const fs::path kRoot = fs::path(RTLAB_TEST_TMP) / "sweep";
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line))
+    if (!line.empty()) out.push_back(line);
+  return out;
+}
+
+std::vector<std::string> splitCsv(const std::string& line) { // no quoted fields in these sweeps
+  std::vector<std::string> cells;
+  std::stringstream ss(line);
+  std::string cell;
+  while (std::getline(ss, cell, ',')) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.push_back("");
+  return cells;
+}
+
+// The CSV without the measured-time columns (ms, frame_ms), which differ between runs.
+std::vector<std::vector<std::string>> csvWithoutTimes(const fs::path& path) {
+  const auto rows = lines(slurp(path));
+  std::vector<std::vector<std::string>> out;
+  if (rows.empty()) return out;
+  const auto header = splitCsv(rows[0]);
+  for (const auto& row : rows) {
+    const auto cells = splitCsv(row);
+    std::vector<std::string> kept;
+    for (std::size_t i = 0; i < cells.size() && i < header.size(); ++i)
+      if (header[i] != "ms" && header[i] != "frame_ms") kept.push_back(cells[i]);
+    out.push_back(kept);
+  }
+  return out;
+}
+
+// The sweep every test shares: shadow_map at three shadow-map resolutions, 32x32, 16 spp.
+const std::vector<std::string> kSweepArgs = {"sweep", "--scene", "contact", "--size", "32x32", "--spp", "16",
+                                             "-t", "shadow_map", "--vary", "shadow.resolution=256,512,1024"};
+
+std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
+const char* kReportChecker = R"PY(
+import html.parser, re, sys, xml.etree.ElementTree as ET
+text = open(sys.argv[1], encoding='utf-8').read()
+VOID = {'area', 'base', 'br', 'col', 'embed', 'hr', 'img', 'input', 'link', 'meta', 'source', 'track', 'wbr'}
+errors = []
+class Checker(html.parser.HTMLParser):
+    def __init__(self):
+        super().__init__(convert_charrefs=True)
+        self.stack, self.refs, self.imgs = [], [], 0
+    def handle_starttag(self, tag, attrs):
+        for k, v in attrs:
+            v = v or ''
+            if k in ('src', 'href', 'srcset', 'action', 'data', 'poster', 'xlink:href', 'background'):
+                self.refs.append((tag, k, v))
+            if 'url(' in v:
+                errors.append('url() in attribute of <%s>' % tag)
+        if tag == 'img':
+            self.imgs += 1
+        if tag in ('script', 'link', 'iframe', 'object', 'embed'):
+            errors.append('<%s> element' % tag)
+        if tag not in VOID:
+            self.stack.append(tag)
+    def handle_endtag(self, tag):
+        if tag in VOID:
+            return
+        if not self.stack or self.stack[-1] != tag:
+            errors.append('unbalanced </%s> (open: %s)' % (tag, self.stack[-3:]))
+        else:
+            self.stack.pop()
+c = Checker()
+c.feed(text)
+c.close()
+if c.stack:
+    errors.append('unclosed: %s' % c.stack)
+if not text.startswith('<!DOCTYPE html>'):
+    errors.append('no doctype')
+for tag, k, v in c.refs:
+    if not (v.startswith('data:') or v.startswith('#')):
+        errors.append('external reference %s=%r on <%s>' % (k, v[:60], tag))
+for bad in ('http://', 'https://', '@import', 'url('):
+    if bad in text:
+        errors.append('%r in the page' % bad)
+svgs = re.findall(r'<svg\b.*?</svg>', text, re.S)
+if len(svgs) != 1:
+    errors.append('%d svg elements' % len(svgs))
+for svg in svgs:
+    try:
+        root = ET.fromstring(svg)
+        circles = [e for e in root.iter() if e.tag == 'circle' and e.get('class') == 'point']
+        if len(circles) != int(sys.argv[2]):
+            errors.append('%d points in the chart' % len(circles))
+        if not [e for e in root.iter() if e.tag == 'path' and e.get('class') == 'pareto']:
+            errors.append('no Pareto front')
+    except ET.ParseError as e:
+        errors.append('svg not well-formed: %s' % e)
+if c.imgs < 2 * int(sys.argv[2]) + 1:
+    errors.append('%d images' % c.imgs)
+print('\n'.join(errors) if errors else 'ok')
+sys.exit(1 if errors else 0)
+)PY";
+
+// A folder of its own for each test: ctest runs every test in its own process, in parallel.
+fs::path testDir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  fs::path dir = kRoot / info->test_suite_name() / info->name();
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+class Sweep : public ::testing::Test {
+protected:
+  // The direct sweep runs once per process, into the folder of the first test that needs it.
+  void SetUp() override {
+    if (s_direct.empty()) {
+      const fs::path dir = testDir();
+      setenv("RTLAB_CACHE_DIR", (dir / "cache-direct").c_str(), 1);
+      s_result = runProcess(RTLAB_BINARY, with(kSweepArgs, {"--out", (dir / "direct").string(), "--jobs", "2"}), 120);
+      s_direct = dir / "direct";
+    }
+    ASSERT_EQ(s_result.exitCode, 0) << s_result.err;
+  }
+  static fs::path s_direct;
+  static rtlab::test::ProcessResult s_result;
+};
+fs::path Sweep::s_direct;
+rtlab::test::ProcessResult Sweep::s_result;
+
+TEST_F(Sweep, ThreePointsWriteThreeCsvRows) {
+  const fs::path dir = s_direct;
+  const auto rows = lines(slurp(dir / "results.csv"));
+  ASSERT_EQ(rows.size(), 4u) << slurp(dir / "results.csv");
+  EXPECT_EQ(rows[0], "technique,shadow.resolution,ms,frame_ms,rmse,psnr,ssim,flip,timing");
+  const char* resolutions[] = {"256", "512", "1024"};
+  for (int i = 0; i < 3; ++i) {
+    const auto cells = splitCsv(rows[std::size_t(i) + 1]);
+    ASSERT_EQ(cells.size(), 9u) << rows[std::size_t(i) + 1];
+    EXPECT_EQ(cells[0], "shadow_map");
+    EXPECT_EQ(cells[1], resolutions[i]);
+    EXPECT_GT(std::stod(cells[2]), 0.0) << "the technique's passes take time";
+    const double rmse = std::stod(cells[4]);
+    EXPECT_TRUE(rmse >= 0 && rmse < 1) << rows[std::size_t(i) + 1];
+    EXPECT_TRUE(cells[8] == "cpu-finish" || cells[8] == "gpu-query") << cells[8];
+  }
+  // Each point's outputs, one reference (resolution does not define it), and its cache entry.
+  for (const char* p : {"000", "001", "002"})
+    for (const char* f : {"aov.exr", "color.png", "stats.json", "done.json", "error.png"})
+      EXPECT_TRUE(fs::is_regular_file(dir / "points" / p / f)) << p << "/" << f;
+  const auto plan = nlohmann::json::parse(slurp(dir / "sweep.json"));
+  EXPECT_EQ(plan["schema"], 1);
+  ASSERT_EQ(plan["references"].size(), 1u);
+  const std::string hash = plan["references"][0]["hash"];
+  EXPECT_TRUE(fs::is_regular_file(dir / "reference" / (hash + ".exr")));
+  EXPECT_TRUE(fs::is_regular_file(dir.parent_path() / "cache-direct" / "reference" / (hash + ".exr")));
+  EXPECT_EQ(lines(slurp(dir / "jobs.txt")).size(), 4u);
+  // The point's AOV has the mask, and the reference matches its size.
+  const rtlab::Image aov = rtlab::readImage((dir / "points" / "000" / "aov.exr").string());
+  EXPECT_EQ(aov.width, 32);
+  EXPECT_TRUE(aov.hasMask());
+}
+
+TEST_F(Sweep, ReportIsSelfContainedHtmlWithWellFormedSvg) {
+  const fs::path report = s_direct / "report.html";
+  ASSERT_TRUE(fs::is_regular_file(report));
+  const auto r = runProcess("/usr/bin/python3", {"-c", kReportChecker, report.string(), "3"});
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  const std::string html = slurp(report);
+  for (const char* needle : {"cpu-finish", "shadow.resolution", "Pareto front", "seed", "commit"})
+    EXPECT_NE(html.find(needle), std::string::npos) << needle;
+}
+
+TEST_F(Sweep, EmitJobsThenCollectGivesTheDirectSweepsCsv) {
+  const fs::path root = s_direct.parent_path() / "emit-jobs";
+  fs::remove_all(root);
+  const fs::path dir = root / "emitted";
+  const fs::path jobs = root / "jobs.txt";
+  setenv("RTLAB_CACHE_DIR", (root / "cache-emitted").c_str(), 1); // a cold cache: the reference job renders
+  const auto plan = runProcess(RTLAB_BINARY, with(kSweepArgs, {"--out", dir.string(), "--emit-jobs", jobs.string()}));
+  ASSERT_EQ(plan.exitCode, 0) << plan.err;
+  EXPECT_FALSE(fs::exists(dir / "points")) << "--emit-jobs renders nothing";
+  const auto commands = lines(slurp(jobs));
+  ASSERT_EQ(commands.size(), 4u);
+  EXPECT_NE(commands[0].find("--run-reference"), std::string::npos) << commands[0];
+  for (const auto& c : commands) EXPECT_EQ(c.front(), '/') << "absolute commands: " << c;
+
+  // Collecting before the jobs ran names what is missing.
+  const auto early = runProcess(RTLAB_BINARY, {"sweep", "--collect", dir.string()});
+  EXPECT_EQ(early.exitCode, 3) << early.err;
+  EXPECT_EQ(rtlab::test::lineCount(early.err), 1) << early.err;
+  EXPECT_NE(early.err.find("points/000"), std::string::npos) << early.err;
+  EXPECT_FALSE(fs::exists(dir / "results.csv"));
+
+  // The points first, then the reference: points do not depend on it, only --collect does.
+  for (std::size_t i = 1; i <= commands.size(); ++i) {
+    const auto& c = commands[i % commands.size()];
+    const auto r = runProcess("/bin/sh", {"-c", c}, 120);
+    ASSERT_EQ(r.exitCode, 0) << c << "\n" << r.err;
+  }
+  const auto collect = runProcess(RTLAB_BINARY, {"sweep", "--collect", dir.string()});
+  ASSERT_EQ(collect.exitCode, 0) << collect.err;
+  EXPECT_EQ(csvWithoutTimes(dir / "results.csv"), csvWithoutTimes(s_direct / "results.csv"));
+  EXPECT_TRUE(fs::is_regular_file(root / "cache-emitted" / "reference" /
+                                  (nlohmann::json::parse(slurp(dir / "sweep.json"))["references"][0]["hash"].get<std::string>() +
+                                   ".exr")));
+  EXPECT_TRUE(fs::is_regular_file(dir / "report.html"));
+}
+
+TEST_F(Sweep, ReportInHeadlessChromium) {
+  const fs::path chromium = "/usr/bin/chromium";
+  if (!fs::exists(chromium)) GTEST_SKIP() << "no /usr/bin/chromium (scripts/setup.sh --test-deps installs it)";
+  const fs::path shot = kRoot / "report.png"; // kept as the test's artifact
+  const fs::path profile = s_direct.parent_path() / "chromium-profile";
+  fs::remove(shot);
+  const auto r = runProcess(chromium.string(),
+                            {"--headless", "--no-sandbox", "--disable-gpu", "--enable-logging=stderr", "--v=0",
+                             "--no-first-run", "--user-data-dir=" + profile.string(), "--window-size=1200,1400",
+                             "--screenshot=" + shot.string(), "file://" + (s_direct / "report.html").string()},
+                            90);
+  ASSERT_FALSE(r.timedOut);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  for (const auto& line : lines(r.err))
+    EXPECT_EQ(line.find("CONSOLE"), std::string::npos) << "console message: " << line;
+  ASSERT_TRUE(fs::is_regular_file(shot)) << r.err;
+  const rtlab::Image image = rtlab::readImage(shot.string());
+  ASSERT_GT(image.width, 100);
+  // Not blank: the page has text, a chart and images, so the pixels vary.
+  double sum = 0, sumSq = 0;
+  for (float v : image.pixels) sum += v, sumSq += double(v) * v;
+  const double n = double(image.pixels.size());
+  const double variance = sumSq / n - (sum / n) * (sum / n);
+  EXPECT_GT(variance, 1e-3) << "the screenshot is blank";
+  std::size_t dark = 0;
+  for (float v : image.pixels) dark += v < 0.5f;
+  EXPECT_GT(dark, image.pixels.size() / 200) << "no text or chart drawn";
+}
+
+// ---- bad input: exit 2 or 3 before anything is rendered or written ----
+
+struct BadSweep {
+  std::vector<std::string> args;
+  int exitCode;
+  std::string mentions;
+};
+
+void PrintTo(const BadSweep& b, std::ostream* os) {
+  for (const auto& a : b.args) *os << a << " ";
+  *os << "-> " << b.exitCode;
+}
+
+class SweepBadInput : public ::testing::TestWithParam<BadSweep> {};
+
+TEST_P(SweepBadInput, FailsEarlyWithOneLine) {
+  const fs::path dir = testDir() / "out";
+  std::vector<std::string> args = GetParam().args;
+  for (auto& a : args)
+    if (a == "DIR") a = dir.string();
+  const auto r = runProcess(RTLAB_BINARY, args);
+  EXPECT_EQ(r.exitCode, GetParam().exitCode) << r.err;
+  EXPECT_EQ(rtlab::test::lineCount(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("rtlab: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(GetParam().mentions), std::string::npos) << r.err;
+  if (GetParam().args.size() > 2 && GetParam().args[1] != "--collect") {
+    EXPECT_FALSE(fs::exists(dir / "sweep.json"));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Sweep, SweepBadInput,
+    ::testing::Values(
+        BadSweep{{"sweep", "-t", "shadow_map", "--vary", "shadow.resolution=100,512", "--out", "DIR"}, 2, "[256, 4096]"},
+        BadSweep{{"sweep", "-t", "shadow_map", "--vary", "shadow.resolution=256:8192:3", "--out", "DIR"}, 2, "shadow.resolution"},
+        BadSweep{{"sweep", "-t", "shadow_map", "--vary", "shadow.resoltion=256", "--out", "DIR"}, 2, "did you mean"},
+        BadSweep{{"sweep", "-t", "shadow_map", "--vary", "ao.radius=0.1,1", "--out", "DIR"}, 2, "ao.radius"},
+        BadSweep{{"sweep", "-t", "shadow_map", "--vary", "shadow.depth_format=16:32f:2", "--out", "DIR"}, 2, "shadow.depth_format"},
+        BadSweep{{"sweep", "-t", "shadow_map", "--vary", "shadow.resolution", "--out", "DIR"}, 2, "KEY="},
+        BadSweep{{"sweep", "-t", "none", "--out", "DIR"}, 2, "none"},
+        BadSweep{{"sweep", "-t", "nope", "--out", "DIR"}, 2, "nope"},
+        BadSweep{{"sweep", "--vary", "shadow.resolution=256", "--out", "DIR"}, 2, "-t"},
+        BadSweep{{"sweep", "-t", "shadow_map"}, 2, "--out"},
+        BadSweep{{"sweep", "-t", "shadow_map", "--out", "DIR", "--jobs", "0"}, 2, "--jobs"},
+        BadSweep{{"sweep", "-t", "shadow_map", "--out", "DIR", "--scene", "missing.gltf"}, 3, "missing.gltf"},
+        BadSweep{{"sweep", "--collect", "DIR"}, 3, "sweep"},
+        BadSweep{{"sweep", "--collect", "DIR", "-t", "shadow_map"}, 2, "--collect"},
+        BadSweep{{"sweep", "--run-point", "DIR"}, 2, "--run-point"}));
+
+TEST(SweepPlan, ReferenceDefiningKeysGetTheirOwnReferences) {
+  const fs::path dir = testDir() / "plan";
+  const fs::path jobs = dir.parent_path() / "jobs.txt";
+  const auto r = runProcess(RTLAB_BINARY, {"sweep", "--size", "32x32", "-t", "shadow_map", "--vary",
+                                           "light0.radius=0.05,0.1", "--vary", "shadow.resolution=256:1024:3",
+                                           "--out", dir.string(), "--emit-jobs", jobs.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto plan = nlohmann::json::parse(slurp(dir / "sweep.json"));
+  EXPECT_EQ(plan["points"].size(), 6u);
+  ASSERT_EQ(plan["references"].size(), 2u) << "light0.radius defines the reference, shadow.resolution does not";
+  EXPECT_EQ(plan["points"][0]["reference"], plan["points"][2]["reference"]);
+  EXPECT_NE(plan["points"][0]["reference"], plan["points"][3]["reference"]);
+  EXPECT_EQ(plan["vary"][1]["values"], nlohmann::json({"256", "512", "1024"})); // log scale
+  EXPECT_EQ(lines(slurp(jobs)).size(), 8u);
+  // A point index out of range is a usage error.
+  const auto bad = runProcess(RTLAB_BINARY, {"sweep", "--run-point", dir.string(), "6"});
+  EXPECT_EQ(bad.exitCode, 2) << bad.err;
+}
+
+} // namespace
