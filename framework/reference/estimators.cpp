@@ -99,7 +99,8 @@ float estimateAo(const EstimatorContext& ctx, const SurfacePoint& x, const Pixel
   for (int s = 0; s < sampler.spp(); ++s) {
     const glm::vec3 w = frame.toWorld(squareToCosineHemisphere(sampler.get(s, 0)));
     if (!(glm::dot(w, x.geometricNormal) > 0.0f)) continue;
-    ++rays; if (!ctx.tracer.occluded(start.origin, w, start.tnear, ctx.aoRadius)) ++open;
+    packet.add(start.origin, w, start.tnear, ctx.aoRadius);
+    if (packet.count == 8) flush();
   }
   if (packet.count > 0) flush();
   return float(open) / float(sampler.spp());

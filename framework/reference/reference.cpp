@@ -80,7 +80,7 @@ Image renderReference(const Scene& scene, const SurfaceData& surfaces, const std
   if (options.spp < kReferenceMinSpp || options.spp > kReferenceMaxSpp)
     usageError("--spp " + std::to_string(options.spp) + " is out of range " + std::to_string(kReferenceMinSpp) +
                ".." + std::to_string(kReferenceMaxSpp));
-  if (quantity == Quantity::Ao && !(options.aoRadius > 0.0f) )
+  if (quantity == Quantity::Ao && !(options.aoRadius > 0.0f))
     usageError("ao.radius must be positive for the ao reference");
   if (quantity == Quantity::Visibility && scene.lights.empty())
     usageError("the visibility reference needs a light 0; the scene has no light");

@@ -96,6 +96,27 @@ TEST(Reference, PointLightBehindOccluderGivesZero) {
   EXPECT_EQ(minOf(renderReference(glass, inside, "visibility", opts(4))), 1.0f);
 }
 
+TEST(Reference, AlphaMaskedOccludersAreCutOutAsInTheGBuffer) {
+  // A 1x1 texture: alpha 0 cuts the whole occluder out (alpha < cutoff), alpha 1 keeps it.
+  for (const std::uint8_t alpha : {std::uint8_t(0), std::uint8_t(255)}) {
+    Scene s = floorScene();
+    TextureImage t;
+    t.width = t.height = 1;
+    t.rgba8 = {255, 255, 255, alpha};
+    t.srgb = true;
+    s.textures.push_back(t);
+    Material m;
+    m.alphaMode = AlphaMode::Mask;
+    m.alphaCutoff = 0.5f;
+    m.baseColorTexture = 0;
+    s.materials.push_back(m);
+    addQuad(s, {0, 1, 0}, {1, 0, 0}, {0, 0, -1}, 0);
+    s.lights = {test::point({0, 3, 0}, 10, 0)};
+    const Image v = renderReference(s, floorPoints(4), "visibility", opts(1));
+    EXPECT_EQ(v.at(1, 1, 0), alpha == 0 ? 1.0f : 0.0f) << int(alpha); // (-0.5, 0, -0.5): under the quad
+  }
+}
+
 TEST(Reference, LightBelowTheSurfaceIsHidden) {
   Scene s = floorScene();
   s.lights = {test::point({0, -3, 0}, 10, 0)}; // under the open floor quad: only its own surface hides it
@@ -207,6 +228,22 @@ TEST(Reference, IndirectFromALitPlaneIsAlbedoTimesIrradiance) {
   const glm::vec3 expected = rho * 2.0f * color;
   for (std::size_t i = 0; i < points.pixelCount(); ++i)
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(e.pixels[i * 3 + k], expected[k], 1e-3f * expected[k]);
+
+  // A base colour texture (sRGB 188 = 0.5 linear) multiplies the base colour, sampled at the hit.
+  Scene textured = s;
+  TextureImage t;
+  t.width = t.height = 1;
+  t.rgba8 = {188, 188, 188, 255};
+  t.srgb = true;
+  textured.textures.push_back(t);
+  textured.materials[0].baseColorTexture = 0;
+  const Image et = renderReference(textured, points, "indirect", opts(4));
+  const float srgb188 = std::pow((188.0f / 255.0f + 0.055f) / 1.055f, 2.4f);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(et.pixels[std::size_t(k)], expected[k] * srgb188, 1e-3f * expected[k]);
+  // Metals reflect no diffuse light.
+  Scene metal = s;
+  metal.materials[0].metallic = 1.0f;
+  EXPECT_EQ(maxOf(renderReference(metal, points, "indirect", opts(4))), 0.0f);
 
   // Visibility on the second segment: a plane below the points shades the lit plane.
   Scene shaded = s;
