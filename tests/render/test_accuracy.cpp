@@ -1,0 +1,95 @@
+// Accuracy against the ray-traced reference (framework/reference/), same frame and same surface
+// points: shadow_map converges with resolution; soft techniques beat the hard shadow under an
+// area light; VSSM (without its bleeding reduction) leaks more light into umbrae than MSM where
+// occluders stack. Each bound below
+// was measured on llvmpipe at 128x128 with a 256-spp reference (values in the comments) and set
+// with a margin that still fails if the technique breaks (a missing shadow gives rmse > 0.3).
+#include "render_fixture.h"
+
+#include "app/frame_options.h"
+#include "app/reference_run.h"
+#include "image/metrics.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+namespace rtlab {
+namespace {
+
+constexpr int kSize = 128;
+constexpr int kSpp = 256;
+
+struct Measured {
+  Image visibility, reference;
+  Metrics metrics;
+};
+
+Measured measure(const std::string& scene, const std::string& technique, const std::vector<std::string>& sets) {
+  TestFrame f = makeTestFrame(scene, technique, sets, kSize, kSize);
+  TestRender r = renderTestFrame(f, {"visibility"});
+  Measured m;
+  m.visibility = r.renderer->readAov("visibility");
+  ResolvedFrame resolved;
+  resolved.options.width = kSize;
+  resolved.options.height = kSize;
+  resolved.scene = f.scene;
+  resolved.params = f.params;
+  resolved.techniques = f.techniques;
+  m.reference = renderReferenceFrame(*r.renderer, resolved, "visibility", kSpp, false);
+  m.metrics = computeMetrics(m.reference, m.visibility);
+  std::printf("%-10s %-8s %-40s rmse %.4f\n", technique.c_str(), scene.c_str(),
+              sets.empty() ? "" : sets.front().c_str(), m.metrics.rmse);
+  return m;
+}
+
+// Mean visibility (light leaked) where the reference is fully shadowed.
+double umbraLeak(const Measured& m) {
+  double sum = 0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < m.reference.pixelCount(); ++i) {
+    if (m.reference.mask[i] < 0.5f || m.reference.pixels[i] > 0.0f) continue;
+    sum += m.visibility.pixels[i];
+    ++n;
+  }
+  return n ? sum / double(n) : 0.0;
+}
+
+TEST(Accuracy, ShadowMapMatchesAPointLightAndImprovesWithResolution) {
+  // Measured: rmse 0.047 at 2048^2 and 0.106 at 256^2; the residual is edge aliasing (one
+  // map texel covers several pixels), the bound 0.15 fails for a missing or misplaced shadow.
+  const Measured high = measure("contact", "shadow_map", {"light0.radius=0", "shadow.resolution=2048"});
+  const Measured low = measure("contact", "shadow_map", {"light0.radius=0", "shadow.resolution=256"});
+  EXPECT_GT(high.metrics.validPixels, std::size_t(kSize * kSize / 2));
+  EXPECT_LT(high.metrics.rmse, 0.15);
+  EXPECT_LT(high.metrics.rmse, low.metrics.rmse);
+}
+
+TEST(Accuracy, PcssBeatsTheHardShadowUnderAnAreaLight) {
+  // Measured: shadow_map 0.058, pcss 0.041.
+  const std::vector<std::string> soft = {"light0.radius=0.3"};
+  const double hard = measure("contact", "shadow_map", soft).metrics.rmse;
+  EXPECT_LT(measure("contact", "pcss", soft).metrics.rmse, 0.85 * hard);
+}
+
+TEST(Accuracy, MomentTechniquesStayNearTheReference) {
+  // Measured: vssm 0.085, msm 0.087 — worse than shadow_map's 0.058 here: their errors sit at
+  // the sphere's terminator and at contacts, where the filter box mixes the receiver's own depths
+  // with the ground's (see techniques/vssm/README.md). This bound guards against regressions;
+  // beating the hard shadow is open work.
+  const std::vector<std::string> soft = {"light0.radius=0.3"};
+  for (const char* technique : {"vssm", "msm"}) EXPECT_LT(measure("contact", technique, soft).metrics.rmse, 0.1) << technique;
+}
+
+TEST(Accuracy, VssmLeaksMoreLightIntoUmbraeThanMsm) {
+  // Without VSSM's light-bleeding reduction (which trades bleeding for harder edges): measured
+  // leak vssm 0.110, msm 0.102. With the default reduction 0.2 VSSM leaks 0.082, less than MSM.
+  const double vssm = umbraLeak(measure("stacked", "vssm", {"light0.angle=2", "vssm.bleed_reduction=0"}));
+  const double msm = umbraLeak(measure("stacked", "msm", {"light0.angle=2"}));
+  std::printf("umbra leak on stacked: vssm %.4f, msm %.4f\n", vssm, msm);
+  EXPECT_GT(vssm, 0.005) << "VSSM's bleeding should be measurable";
+  EXPECT_LT(msm, vssm);
+}
+
+} // namespace
+} // namespace rtlab
