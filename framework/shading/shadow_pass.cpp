@@ -3,6 +3,7 @@
 #include "frame/frame_graph.h"
 #include "frame/technique.h"
 #include "gl/program_cache.h"
+#include "params/param_set.h"
 #include "shading/base_passes.h"
 #include "shading/gpu_common.h"
 #include "shading/shadow_depth.h"
@@ -84,6 +85,25 @@ void addLightDepthView(FrameGraph& frame, const std::string& view, ShadowFilterK
         p.set("uNear", ls.znear).set("uFar", ls.zfar);
         ctx.common.drawFullscreen();
       });
+}
+
+std::vector<ParamSpec> softShadowParams(const std::string& id, double maxPenumbra, double penumbraUpper,
+                                        double searchUpper) {
+  return {
+      ParamSpec::real(id + ".min_penumbra", "Min penumbra", 1.0, 0.0, 64.0).withUnit("texels")
+          .withHelp("Smallest filter radius (0 keeps contacts and zero-size lights hard)"),
+      ParamSpec::real(id + ".max_penumbra", "Max penumbra", maxPenumbra, 1.0, penumbraUpper).withUnit("texels")
+          .withHelp("Largest filter radius"),
+      ParamSpec::real(id + ".max_search", "Max search radius", 64.0, 1.0, searchUpper).withUnit("texels")
+          .withHelp("Cap of the blocker-search radius derived from the light's size"),
+  };
+}
+
+void setSoftShadowUniforms(PassContext& ctx, gl::Program& p, const std::string& id) {
+  const float minPenumbra = ctx.params.getFloat(id + ".min_penumbra");
+  p.set("uMinPenumbra", minPenumbra)
+      .set("uMaxPenumbra", std::max(ctx.params.getFloat(id + ".max_penumbra"), minPenumbra))
+      .set("uMaxSearch", ctx.params.getFloat(id + ".max_search"));
 }
 
 std::vector<glm::vec2> ShadowFilterKit::taps(Pattern pattern, int count) {

@@ -6,6 +6,7 @@
 #include "gl/objects.h"
 #include "gl/program.h"
 #include "gl/texture.h"
+#include "params/param_spec.h"
 
 #include <glm/glm.hpp>
 
@@ -39,6 +40,11 @@ void addShadowScreenPass(FrameGraph& frame, const ShadowScreenPass& pass);
 // "visibility", and the debug views "<id>.blocker_depth" and "<id>.penumbra".
 std::vector<struct DebugView> softShadowDebugViews(const std::string& technique);
 void addSoftShadowPasses(FrameGraph& frame, const std::string& technique, ShadowScreenPass pass);
+// Their shared knobs "<id>.min_penumbra", "<id>.max_penumbra" and "<id>.max_search" (texels), and
+// the uniforms uMinPenumbra/uMaxPenumbra/uMaxSearch they set (max never below min).
+std::vector<ParamSpec> softShadowParams(const std::string& technique, double maxPenumbra, double penumbraUpper,
+                                        double searchUpper);
+void setSoftShadowUniforms(PassContext& ctx, gl::Program& program, const std::string& technique);
 
 class ShadowFilterKit;
 struct DebugView;

@@ -26,13 +26,8 @@ public:
             .withHelp("Moments are pulled towards those of a uniform depth distribution by this much (alpha), keeping the Hankel matrix invertible"),
         ParamSpec::boolean("msm.sat_offset", "Offset before summing", true)
             .withHelp("Subtract 0.5 from the moments before building the summed-area table"),
-        ParamSpec::real("msm.min_penumbra", "Min penumbra", 1.0, 0.0, 64.0).withUnit("texels")
-            .withHelp("Smallest filter half-width"),
-        ParamSpec::real("msm.max_penumbra", "Max penumbra", 64.0, 1.0, 256.0).withUnit("texels")
-            .withHelp("Largest filter half-width"),
-        ParamSpec::real("msm.max_search", "Max search radius", 64.0, 1.0, 256.0).withUnit("texels")
-            .withHelp("Cap of the blocker-search half-width derived from the light's size"),
     };
+    for (auto& spec : softShadowParams("msm", 64.0, 256.0, 256.0)) info.params.push_back(spec);
     info.debugViews = softShadowDebugViews("msm");
     info.debugViews.push_back({"msm.moments", 1, "first channel of the moment map as stored (z, or its optimized transform)"});
     return info;
@@ -55,10 +50,8 @@ public:
     if (optimized) pass.defines.push_back("OPTIMIZED");
     pass.bind = [config](PassContext& ctx, gl::Program& p) {
       bindMomentSat(ctx, p, config, 3);
-      p.set("uMomentBias", ctx.params.getFloat("msm.moment_bias"))
-          .set("uMinPenumbra", ctx.params.getFloat("msm.min_penumbra"))
-          .set("uMaxPenumbra", std::max(ctx.params.getFloat("msm.max_penumbra"), ctx.params.getFloat("msm.min_penumbra")))
-          .set("uMaxSearch", ctx.params.getFloat("msm.max_search"));
+      p.set("uMomentBias", ctx.params.getFloat("msm.moment_bias"));
+      setSoftShadowUniforms(ctx, p, "msm");
     };
     addSoftShadowPasses(frame, "msm", pass);
     addMomentView(frame, "msm", "msm.moments");

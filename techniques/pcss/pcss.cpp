@@ -25,17 +25,12 @@ public:
             .withHelp("Depth taps of the blocker search"),
         ParamSpec::integer("pcss.filter_samples", "Filter samples", 32, 1, 64).logScale().withUnit("taps")
             .withHelp("Depth comparisons of the filtering step"),
-        ParamSpec::real("pcss.min_penumbra", "Min penumbra", 1.0, 0.0, 64.0).withUnit("texels")
-            .withHelp("Smallest filter radius (0 keeps contacts and zero-size lights hard)"),
-        ParamSpec::real("pcss.max_penumbra", "Max penumbra", 32.0, 1.0, 64.0).withUnit("texels")
-            .withHelp("Largest filter radius"),
-        ParamSpec::real("pcss.max_search", "Max search radius", 64.0, 1.0, 128.0).withUnit("texels")
-            .withHelp("Cap of the blocker-search radius derived from the light's size"),
         ParamSpec::boolean("pcss.rotate", "Rotate per pixel", true)
             .withHelp("Rotate the Poisson taps per pixel by blue noise (noise instead of banding)"),
         ParamSpec::boolean("pcss.receiver_plane_bias", "Receiver-plane bias", true)
             .withHelp("Compare filter taps against the receiver's plane at the tap's offset"),
     };
+    for (auto& spec : softShadowParams("pcss", 32.0, 64.0, 128.0)) info.params.push_back(spec);
     info.debugViews = softShadowDebugViews("pcss");
     info.debugViews.push_back(lightDepthView("pcss"));
     info.showcaseScene = "contact";
@@ -51,10 +46,8 @@ public:
       m_kit.bindFilter(p, filterTaps, ctx.params.getBool("pcss.rotate"), ctx.params.getBool("pcss.receiver_plane_bias"), false);
       m_kit.bindRawDepth(ctx, p, "uShadowRaw", 4);
       p.set("uSearchTaps", searchTaps)
-          .set("uSearchTapCount", int(searchTaps.size()))
-          .set("uMinPenumbra", ctx.params.getFloat("pcss.min_penumbra"))
-          .set("uMaxPenumbra", std::max(ctx.params.getFloat("pcss.max_penumbra"), ctx.params.getFloat("pcss.min_penumbra")))
-          .set("uMaxSearch", ctx.params.getFloat("pcss.max_search"));
+          .set("uSearchTapCount", int(searchTaps.size()));
+      setSoftShadowUniforms(ctx, p, "pcss");
     };
     ShadowScreenPass pass;
     pass.fragment = "pcss/visibility.frag";

@@ -28,13 +28,8 @@ public:
             .withHelp("Variance floor of Chebyshev's bound (against acne on planar receivers)"),
         ParamSpec::real("vssm.bleed_reduction", "Light-bleeding reduction", 0.2, 0.0, 0.95)
             .withHelp("Bound values below this are cut to 0 and the rest rescaled (less bleeding, harder edges)"),
-        ParamSpec::real("vssm.min_penumbra", "Min penumbra", 1.0, 0.0, 64.0).withUnit("texels")
-            .withHelp("Smallest filter half-width"),
-        ParamSpec::real("vssm.max_penumbra", "Max penumbra", 64.0, 1.0, 256.0).withUnit("texels")
-            .withHelp("Largest filter half-width (the table makes any size cost the same)"),
-        ParamSpec::real("vssm.max_search", "Max search radius", 64.0, 1.0, 256.0).withUnit("texels")
-            .withHelp("Cap of the blocker-search half-width derived from the light's size"),
     };
+    for (auto& spec : softShadowParams("vssm", 64.0, 256.0, 256.0)) info.params.push_back(spec);
     info.debugViews = softShadowDebugViews("vssm");
     info.debugViews.push_back({"vssm.moments", 1, "first moment: mean normalized linear light depth (0 near, 1 far)"});
     return info;
@@ -55,10 +50,8 @@ public:
     pass.bind = [config](PassContext& ctx, gl::Program& p) {
       bindMomentSat(ctx, p, config, 3);
       p.set("uMinVariance", ctx.params.getFloat("vssm.min_variance"))
-          .set("uBleedReduction", ctx.params.getFloat("vssm.bleed_reduction"))
-          .set("uMinPenumbra", ctx.params.getFloat("vssm.min_penumbra"))
-          .set("uMaxPenumbra", std::max(ctx.params.getFloat("vssm.max_penumbra"), ctx.params.getFloat("vssm.min_penumbra")))
-          .set("uMaxSearch", ctx.params.getFloat("vssm.max_search"));
+          .set("uBleedReduction", ctx.params.getFloat("vssm.bleed_reduction"));
+      setSoftShadowUniforms(ctx, p, "vssm");
     };
     addSoftShadowPasses(frame, "vssm", pass);
     addMomentView(frame, "vssm", "vssm.moments");
