@@ -28,6 +28,17 @@ float shadowTexelWorld(vec3 p) {
 #endif
 }
 
+// True when the surface at p faces away from light 0's center (geometric normal n): such a point
+// is shadowed by its own surface. Depth comparisons find this by themselves; filtered moments
+// blur it with nearby depths, so moment techniques apply it explicitly.
+bool shadowFacesAway(vec3 p, vec3 n) {
+#if SHADOW_PROJECTION == 0
+  return dot(n, -uLightDirection) <= 0.0;
+#else
+  return dot(n, uLightPosition - p) <= 0.0;
+#endif
+}
+
 // The receiver point after the normal offset (Holbein 2011's "normal offset shadows").
 vec3 shadowReceiver(vec3 p, vec3 geometricNormal) {
   return p + geometricNormal * (uNormalBias * shadowTexelWorld(p));

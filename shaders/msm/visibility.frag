@@ -45,7 +45,10 @@ void main() {
   float t = (zR - uLightNear) / (uLightFar - uLightNear) - uConstantBias;
 
   float visibility = 1.0, blockerShown = 0.0, radius = 0.0;
-  if (inside && mask > 0.0) {
+  vec3 n = mask > 0.0 ? normalize(geometry.xyz) : vec3(0.0);
+  if (mask > 0.0 && shadowFacesAway(texelFetch(uPosition, px, 0).xyz, n)) {
+    visibility = 0.0;
+  } else if (inside && mask > 0.0) {
     float search = clamp(shadowSearchTexels(zR), 1.0, uMaxSearch);
     vec4 m = filteredMoments(coord.xy, search);
     float unoccluded = chebyshevUpperBound(m.xy, t, 1e-7);

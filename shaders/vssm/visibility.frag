@@ -33,7 +33,10 @@ void main() {
   float t = (zR - uLightNear) / (uLightFar - uLightNear) - uConstantBias;
 
   float visibility = 1.0, blockerShown = 0.0, radius = 0.0;
-  if (inside && mask > 0.0) {
+  vec3 n = mask > 0.0 ? normalize(geometry.xyz) : vec3(0.0);
+  if (mask > 0.0 && shadowFacesAway(texelFetch(uPosition, px, 0).xyz, n)) {
+    visibility = 0.0;
+  } else if (inside && mask > 0.0) {
     float search = clamp(shadowSearchTexels(zR), 1.0, uMaxSearch);
     vec2 m = boxMoments(coord.xy, search).xy;
     float unoccluded = chebyshevUpperBound(m, t, uMinVariance);

@@ -65,29 +65,22 @@ TEST(Accuracy, ShadowMapMatchesAPointLightAndImprovesWithResolution) {
   EXPECT_LT(high.metrics.rmse, low.metrics.rmse);
 }
 
-TEST(Accuracy, PcssBeatsTheHardShadowUnderAnAreaLight) {
-  // Measured: shadow_map 0.058, pcss 0.041.
+TEST(Accuracy, SoftTechniquesBeatTheHardShadowUnderAnAreaLight) {
+  // Measured rmse: shadow_map 0.058, pcss 0.041, vssm 0.017, msm 0.023.
   const std::vector<std::string> soft = {"light0.radius=0.3"};
   const double hard = measure("contact", "shadow_map", soft).metrics.rmse;
-  EXPECT_LT(measure("contact", "pcss", soft).metrics.rmse, 0.85 * hard);
-}
-
-TEST(Accuracy, MomentTechniquesStayNearTheReference) {
-  // Measured: vssm 0.085, msm 0.087 — worse than shadow_map's 0.058 here: their errors sit at
-  // the sphere's terminator and at contacts, where the filter box mixes the receiver's own depths
-  // with the ground's (see techniques/vssm/README.md). This bound guards against regressions;
-  // beating the hard shadow is open work.
-  const std::vector<std::string> soft = {"light0.radius=0.3"};
-  for (const char* technique : {"vssm", "msm"}) EXPECT_LT(measure("contact", technique, soft).metrics.rmse, 0.1) << technique;
+  for (const char* technique : {"pcss", "vssm", "msm"})
+    EXPECT_LT(measure("contact", technique, soft).metrics.rmse, 0.85 * hard) << technique;
 }
 
 TEST(Accuracy, VssmLeaksMoreLightIntoUmbraeThanMsm) {
-  // Without VSSM's light-bleeding reduction (which trades bleeding for harder edges): measured
-  // leak vssm 0.110, msm 0.102. With the default reduction 0.2 VSSM leaks 0.082, less than MSM.
+  // The raw bounds: VSSM without its light-bleeding reduction (which cuts the lowest 20% of the
+  // bound and so hides most leaking at the cost of harder edges). Measured umbra leak: vssm
+  // 0.032 unreduced (0.0045 with the default reduction), msm 0.0245.
   const double vssm = umbraLeak(measure("stacked", "vssm", {"light0.angle=2", "vssm.bleed_reduction=0"}));
   const double msm = umbraLeak(measure("stacked", "msm", {"light0.angle=2"}));
   std::printf("umbra leak on stacked: vssm %.4f, msm %.4f\n", vssm, msm);
-  EXPECT_GT(vssm, 0.005) << "VSSM's bleeding should be measurable";
+  EXPECT_GT(vssm, 0.01) << "VSSM's bleeding should be measurable";
   EXPECT_LT(msm, vssm);
 }
 
