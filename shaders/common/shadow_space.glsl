@@ -28,9 +28,10 @@ float shadowTexelWorld(vec3 p) {
 #endif
 }
 
-// True when the surface at p faces away from light 0's center (geometric normal n): such a point
-// is shadowed by its own surface. Depth comparisons find this by themselves; filtered moments
-// blur it with nearby depths, so moment techniques apply it explicitly.
+// True when the surface at p faces away from light 0's center (geometric normal n): the light is
+// below its horizon, so every shadow technique returns 0 there, as the reference does. Depth
+// comparisons mostly find this by themselves; filters and moments blur it with nearby depths,
+// and the normal offset can lift a back face out of its own shadow.
 bool shadowFacesAway(vec3 p, vec3 n) {
 #if SHADOW_PROJECTION == 0
   return dot(n, -uLightDirection) <= 0.0;

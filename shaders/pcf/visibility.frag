@@ -17,5 +17,6 @@ void main() {
   vec3 p = texelFetch(uPosition, px, 0).xyz;
   vec3 q = shadowReceiver(p, geometry.w > 0.5 ? normalize(geometry.xyz) : vec3(0.0));
   float visibility = shadowFilter(q, uRadius, uTapCount); // every lane: derivatives inside
+  if (geometry.w >= 0.5 && shadowFacesAway(p, normalize(geometry.xyz))) visibility = 0.0;
   oVisibility = geometry.w < 0.5 ? 0.0 : visibility;
 }

@@ -98,6 +98,7 @@ void main() {
   // 3. Filter (every lane, for the derivatives of the receiver-plane bias).
   float visibility = shadowFilter(q, radius, uTapCount);
   if (blockers == 0) visibility = 1.0;
+  if (geometry.w >= 0.5 && shadowFacesAway(p, normalize(geometry.xyz))) visibility = 0.0;
   float mask = geometry.w < 0.5 ? 0.0 : 1.0;
 #if OUTPUT == 1
   float shown = blockers > 0 ? clamp((zB - uLightNear) / (uLightFar - uLightNear), 0.0, 1.0) : 0.0;

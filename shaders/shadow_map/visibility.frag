@@ -18,5 +18,6 @@ void main() {
     return;
   }
   vec3 p = texelFetch(uPosition, px, 0).xyz;
-  oVisibility = shadowTestHard(shadowReceiver(p, normalize(geometry.xyz)));
+  vec3 n = normalize(geometry.xyz);
+  oVisibility = shadowFacesAway(p, n) ? 0.0 : shadowTestHard(shadowReceiver(p, n));
 }
