@@ -1,4 +1,4 @@
-// VSSM — Yang, Dong, Feng, Shi, Tong, Zhang & Peng 2010, "Variance soft shadow mapping", on
+// VSSM — Yang, Dong, Feng, Seidel & Kautz 2010, "Variance soft shadow mapping" (CGF 29(7)), on
 // variance shadow maps (Donnelly & Lauritzen 2006). Approximates the visibility of light 0 as an
 // area light with PCSS's three steps, each done in constant time from a summed-area table of the
 // depth moments (z, z^2): Chebyshev's bound replaces the per-texel depth comparisons.
