@@ -1,0 +1,39 @@
+// Lecture bookmarks (`rtlab view --bookmarks FILE`): a JSON file of named viewer states —
+// scene, camera, active techniques, parameters, debug view and compare mode — stepped through
+// with the arrow keys in lecture mode. GL-free, unit-tested.
+//
+// File: {"schema": 1, "bookmarks": [{"name": "PCSS vs reference", "scene": "contact",
+//   "techniques": ["pcss"], "params": {"pcss.filter_samples": 32},
+//   "camera": {"position": [..], "target": [..], "fov": 45},
+//   "view": {"aov": "visibility", "mode": "full"}, "compare": {"mode": "reference", "divider": 0.5}}]}
+// Every field but "name" is optional; params as in presets.
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rtlab {
+
+struct Bookmark {
+  std::string name;
+  std::optional<std::string> scene;
+  std::optional<std::vector<std::string>> techniques;
+  nlohmann::json params = nlohmann::json::object(); // {KEY: value}
+  std::optional<glm::vec3> cameraPosition, cameraTarget;
+  std::optional<float> cameraFov;
+  nlohmann::json view = nlohmann::json::object();    // {"aov", "mode", "min", "max", "false_color"}
+  nlohmann::json compare = nlohmann::json::object(); // {"mode", "divider"}
+};
+
+// Error(Input) naming the file and the bookmark for malformed files or fields of the wrong type.
+std::vector<Bookmark> loadBookmarks(const std::string& path);
+std::vector<Bookmark> parseBookmarks(const std::string& text, const std::string& sourceName);
+// Writes atomically (never a half-written file).
+void saveBookmarks(const std::string& path, const std::vector<Bookmark>& bookmarks);
+nlohmann::json bookmarkToJson(const Bookmark& bookmark);
+
+} // namespace rtlab

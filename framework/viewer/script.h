@@ -1,0 +1,61 @@
+// Scripted viewer runs (`rtlab view --script FILE`, CONTRACT.md): a JSON list of actions, parsed
+// and validated before the window opens, so that a bad script exits 3 (unreadable or invalid
+// JSON, an unknown action or field) or 2 (an unknown technique, key or out-of-range value) with
+// a one-line message naming the action's index, and never half-runs. GL-free, unit-tested.
+//
+// Actions (objects with an "action" field):
+//   {"action": "technique", "stage": "shadow", "id": "pcss"}      id "off" turns the stage off
+//   {"action": "set", "key": "pcss.filter_samples", "value": 32}  value as in presets
+//   {"action": "reset", "key": "pcss.filter_samples"}
+//   {"action": "camera", "position": [x,y,z], "target": [x,y,z], "fov": 45}  each optional
+//   {"action": "orbit", "yaw": 10, "pitch": 0}                   degrees about the target
+//   {"action": "view", "aov": "visibility", "mode": "full"|"pip"|"off", "min": 0, "max": 1,
+//    "false_color": true}                                          debug view
+//   {"action": "compare", "mode": "reference"|"snapshot"|"difference"|"off", "divider": 0.5}
+//   {"action": "snapshot"}                                         freeze the current frame as B
+//   {"action": "wait", "frames": 5}
+//   {"action": "wait_samples", "samples": 64, "timeout_s": 120}    until the reference has N spp
+//   {"action": "screenshot", "file": "a.png"}                      the window, UI included
+//   {"action": "save_preset", "file": "p.json"}
+//   {"action": "load_preset", "file": "p.json"}
+//   {"action": "report", "file": "r.json"}   writes the viewer's state: frame count, techniques,
+//        compare mode, reference samples, live metrics (rmse, flip), timings, gl_errors,
+//        shader_errors
+//   {"action": "render_scale", "value": 0.5}
+//   {"action": "lecture", "on": true}
+//   {"action": "bookmark", "index": 0}                             jump to bookmark N
+//   {"action": "quit"}
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rtlab {
+
+struct ScriptAction {
+  std::string action;   // one of the names above
+  std::size_t index = 0; // position in the script (for messages)
+  nlohmann::json args;  // the object as written, validated against the action's fields
+};
+
+// Parses the JSON text of a script. Throws Error(Input) for malformed JSON, a non-list, an
+// object without "action", an unknown action, a missing or unknown field or a field of the
+// wrong JSON type; Error(Usage) for a negative frame or sample count. Keys, technique ids and
+// parameter values are checked by the viewer against its ParamSet before the first frame
+// (validateScript below), so errors still come before anything runs.
+std::vector<ScriptAction> parseScript(const std::string& text, const std::string& sourceName);
+std::vector<ScriptAction> loadScript(const std::string& path); // Error(Input) if unreadable
+
+class ParamSet;
+class TechniqueRegistry;
+// Checks every "technique", "set" and "reset" action against the registry and a copy of the
+// parameters (values applied in order, so a later "set" may depend on an earlier one's key
+// existing); Error(Usage) naming the action index and the key.
+void validateScript(const std::vector<ScriptAction>& script, const ParamSet& params,
+                    const TechniqueRegistry& registry);
+
+} // namespace rtlab
