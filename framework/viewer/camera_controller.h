@@ -32,15 +32,29 @@ public:
   // Applies one frame of input; returns true if the camera moved.
   bool update(const CameraInput& input);
   void reset();
+  // Turns the camera about the target, keeping its distance: yaw about the world's up axis
+  // (positive: counterclockwise seen from above), pitch towards the pole (positive: up), both in
+  // radians; the pitch stays within +-maxPitch. Mouse drags call it with -dx and +dy times
+  // orbitSpeed, so the scene follows the mouse. Returns true if the camera moved.
+  bool orbit(float yaw, float pitch);
   // Places the camera so the box [lo, hi] fills the view, keeping the view direction.
   void frame(const glm::vec3& lo, const glm::vec3& hi);
 
-  // Speeds: radians per pixel of drag, fraction of the target distance per wheel step, and
-  // scene units per second of flying (scaled by the scene's size in frame()).
+  // The viewport whose aspect frame() fits (update() records the input's viewport too).
+  void setViewport(const glm::ivec2& viewport);
+
+  // Speeds: radians per pixel of drag, fraction of the target distance per wheel step (used in
+  // [0, 0.9]), and scene units per second of flying (scaled by the scene's size in frame()).
   float orbitSpeed = 0.005f, zoomStep = 0.1f, flySpeed = 2.0f;
+  float fastFactor = 4.0f;     // fly speed multiplier while shift is held
+  float minDistance = 1e-3f;   // zoom stops this close to the target (scaled in frame())
+  // Orbit keeps the pitch (elevation above the target's horizontal plane) within +-maxPitch,
+  // radians, so the view never passes over a pole and flips.
+  float maxPitch = glm::radians(89.0f);
 
 private:
   Camera m_home, m_camera;
+  glm::ivec2 m_viewport{1, 1};
 };
 
 // The axis-aligned bounds of every instance of the scene, world space (lo > hi when empty).

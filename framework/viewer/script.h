@@ -38,13 +38,24 @@ namespace rtlab {
 
 struct ScriptAction {
   std::string action;   // one of the names above
-  std::size_t index = 0; // position in the script (for messages)
+  std::size_t index = 0; // position in the script (for messages), counted from 0
   nlohmann::json args;  // the object as written, validated against the action's fields
+  std::string source;   // the script's name, for messages
+  // "script 'demo.json' action 3 (\"wait\")": the prefix of every message about this action.
+  std::string where() const;
 };
+
+// Defaults and limits of fields (docs/viewer-scripts.md).
+inline constexpr double kScriptSampleTimeoutDefault = 600.0; // wait_samples "timeout_s", seconds
+inline constexpr double kRenderScaleMin = 0.1, kRenderScaleMax = 1.0; // render_scale "value"
+
+// Every action name, in the order docs/viewer-scripts.md lists them.
+const std::vector<std::string>& scriptActionNames();
 
 // Parses the JSON text of a script. Throws Error(Input) for malformed JSON, a non-list, an
 // object without "action", an unknown action, a missing or unknown field or a field of the
-// wrong JSON type; Error(Usage) for a negative frame or sample count. Keys, technique ids and
+// wrong JSON type; Error(Usage) for a value out of its range or choices (a negative frame or
+// sample count, a mode that does not exist, a divider outside [0, 1], ...). Keys, technique ids and
 // parameter values are checked by the viewer against its ParamSet before the first frame
 // (validateScript below), so errors still come before anything runs.
 std::vector<ScriptAction> parseScript(const std::string& text, const std::string& sourceName);
@@ -55,7 +66,12 @@ class TechniqueRegistry;
 // Checks every "technique", "set" and "reset" action against the registry and a copy of the
 // parameters (values applied in order, so a later "set" may depend on an earlier one's key
 // existing); Error(Usage) naming the action index and the key.
+// Also checks that a "view" AOV is a built-in AOV or a registered technique's debug view, that
+// "load_preset" files load and apply (unless an earlier "save_preset" of the script writes
+// them), and that "screenshot", "report" and "save_preset" paths are writable (Error(Output)).
 void validateScript(const std::vector<ScriptAction>& script, const ParamSet& params,
                     const TechniqueRegistry& registry);
+// Error(Usage) naming the action if a "bookmark" action's index is not below `bookmarkCount`.
+void validateScriptBookmarks(const std::vector<ScriptAction>& script, std::size_t bookmarkCount);
 
 } // namespace rtlab

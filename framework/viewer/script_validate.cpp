@@ -1,0 +1,109 @@
+// Script validation against the frame's registry and parameters, before the first frame: every
+// technique id, key and value the script will use is checked the way `-t` and `--set` check
+// them (frame/selection.cpp, params/param_set.cpp), on a copy of the parameters so that values
+// apply in order.
+#include "frame/aovs.h"
+#include "frame/registry.h"
+#include "frame/stages.h"
+#include "params/param_set.h"
+#include "params/preset.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+#include "viewer/json_fields.h"
+#include "viewer/script.h"
+
+#include <set>
+
+namespace rtlab {
+namespace {
+
+using nlohmann::json;
+
+void checkTechniqueAction(const json& args, const TechniqueRegistry& registry) {
+  const std::string stage = args["stage"].get<std::string>();
+  const std::string id = args["id"].get<std::string>();
+  if (!findStage(stage)) {
+    std::string list;
+    for (const auto& s : stages()) list += (list.empty() ? "" : ", ") + s.id;
+    usageError("unknown stage '" + stage + "' (known: " + list + ")");
+  }
+  if (id == "off") return;
+  const TechniqueEntry& entry = registry.get(id); // Error(Usage) listing the known ids
+  if (entry.info.stage != stage)
+    usageError("technique '" + id + "' belongs to stage '" + entry.info.stage + "', not '" + stage + "'");
+}
+
+void checkCameraAction(const json& args, ParamSet& params) {
+  static const std::pair<const char*, const char*> fields[] = {
+      {"position", "camera.position"}, {"target", "camera.target"}, {"fov", "camera.fov"}};
+  for (const auto& [field, key] : fields) {
+    if (!args.contains(field)) continue;
+    if (params.has(key)) params.setJson(key, args[field]);
+    else if (std::string(field) == "fov" && !(args[field].get<double>() >= 1.0 && args[field].get<double>() <= 170.0))
+      usageError("\"fov\" = " + args[field].dump() + " is out of range [1, 170]");
+  }
+}
+
+bool isDebugView(const std::string& aov, const TechniqueRegistry& registry) {
+  for (const auto& e : registry.entries())
+    for (const auto& v : e.info.debugViews)
+      if (v.name == aov) return true;
+  return false;
+}
+
+void checkLoadPreset(const std::string& path, ParamSet& params, const TechniqueRegistry& registry) {
+  const Preset preset = loadPreset(path); // Error(Input) naming the file
+  if (preset.techniques)
+    for (const auto& id : *preset.techniques)
+      if (id != "none") registry.get(id);
+  applyPreset(preset, params, path);
+}
+
+} // namespace
+
+void validateScript(const std::vector<ScriptAction>& script, const ParamSet& params,
+                    const TechniqueRegistry& registry) {
+  ParamSet copy = params;
+  std::set<std::string> savedPresets; // written by an earlier "save_preset": checked when saved
+  for (const ScriptAction& a : script) {
+    try {
+      const json& args = a.args;
+      if (a.action == "technique") {
+        checkTechniqueAction(args, registry);
+      } else if (a.action == "set") {
+        copy.setJson(args["key"].get<std::string>(), args["value"]);
+      } else if (a.action == "reset") {
+        copy.reset(args["key"].get<std::string>());
+      } else if (a.action == "camera") {
+        checkCameraAction(args, copy);
+      } else if (a.action == "view" && args.contains("aov")) {
+        const std::string aov = args["aov"].get<std::string>();
+        if (!isBuiltinAov(aov) && !isDebugView(aov, registry))
+          usageError("unknown AOV '" + aov + "' (see 'rtlab list')");
+      } else if (a.action == "load_preset") {
+        const std::string file = args["file"].get<std::string>();
+        if (!savedPresets.count(file)) checkLoadPreset(file, copy, registry);
+      } else if (a.action == "save_preset") {
+        checkOutputPath(args["file"].get<std::string>());
+        savedPresets.insert(args["file"].get<std::string>());
+      } else if (a.action == "screenshot" || a.action == "report") {
+        checkOutputPath(args["file"].get<std::string>());
+      }
+    } catch (const Error& e) {
+      throw Error(e.code(), a.where() + ": " + e.what());
+    }
+  }
+}
+
+void validateScriptBookmarks(const std::vector<ScriptAction>& script, std::size_t bookmarkCount) {
+  for (const ScriptAction& a : script) {
+    if (a.action != "bookmark") continue;
+    const long long index = a.args["index"].get<long long>();
+    if (index < 0 || static_cast<unsigned long long>(index) >= bookmarkCount)
+      usageError(a.where() + ": bookmark " + std::to_string(index) + " does not exist (" +
+                 (bookmarkCount == 0 ? std::string("no bookmarks were loaded; see --bookmarks")
+                                     : "there are " + std::to_string(bookmarkCount) + ", numbered from 0") + ")");
+  }
+}
+
+} // namespace rtlab

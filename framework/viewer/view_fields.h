@@ -1,0 +1,18 @@
+// The debug-view and A/B compare settings that both a script action ("view", "compare") and a
+// bookmark ("view": {...}, "compare": {...}) carry, checked the same way in both: JSON types are
+// Error(Input), a mode outside its choices or a value out of range Error(Usage).
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace rtlab {
+
+// Optional fields "aov" (string), "mode" ("full" | "pip" | "off"), "min", "max" (numbers,
+// min < max when both are given), "false_color" (boolean). Unknown fields are the caller's check.
+void checkViewFields(const nlohmann::json& object, const std::string& where);
+// Optional fields "mode" ("reference" | "snapshot" | "difference" | "off") and "divider"
+// (number in [0, 1], the split's position from the left edge).
+void checkCompareFields(const nlohmann::json& object, const std::string& where);
+
+} // namespace rtlab
