@@ -141,11 +141,8 @@ void requireChoice(const std::string& value, std::initializer_list<const char*> 
 
 void requireRange(double value, double lo, double hi, const char* field, const std::string& where) {
   if (value >= lo && value <= hi) return;
-  auto fmt = [](double x) {
-    nlohmann::json j = x;
-    return j.dump();
-  };
-  usageError(where + ": " + quoted(field) + " = " + fmt(value) + " is out of range [" + fmt(lo) + ", " + fmt(hi) + "]");
+  usageError(where + ": " + quoted(field) + " = " + formatNumber(value) + " is out of range [" + formatNumber(lo) +
+             ", " + formatNumber(hi) + "]");
 }
 
 double jsonNumberFromFloat(float value) {
@@ -155,6 +152,12 @@ double jsonNumberFromFloat(float value) {
   double out = double(value);
   if (ec == std::errc()) std::from_chars(buf, end, out);
   return out;
+}
+
+std::string formatNumber(double value) {
+  char buf[64];
+  auto [end, ec] = std::to_chars(buf, buf + sizeof(buf), value);
+  return ec == std::errc() ? std::string(buf, end) : std::to_string(value);
 }
 
 nlohmann::json jsonFromVec3(const glm::vec3& v) {

@@ -50,6 +50,8 @@ void requireRange(double value, double lo, double hi, const char* field, const s
 // The shortest decimal that reads back as the same float: 0.1f is written 0.1, not
 // 0.10000000149011612, and still round-trips exactly.
 double jsonNumberFromFloat(float value);
+// The shortest decimal of a number, for messages: 1, 0.25, 1e+30.
+std::string formatNumber(double value);
 nlohmann::json jsonFromVec3(const glm::vec3& value);
 
 } // namespace rtlab

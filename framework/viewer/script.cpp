@@ -83,7 +83,7 @@ void checkWait(const json& a, const std::string& w) { nonNegative(requireInteger
 void checkWaitSamples(const json& a, const std::string& w) {
   nonNegative(requireInteger(a, "samples", w), "samples", w);
   if (auto t = optionalNumber(a, "timeout_s", w); t && !(*t > 0))
-    usageError(w + ": \"timeout_s\" must be > 0, got " + json(*t).dump());
+    usageError(w + ": \"timeout_s\" must be > 0, got " + formatNumber(*t));
 }
 void checkScreenshot(const json& a, const std::string& w) {
   const std::string file = requireFile(a, w);
@@ -162,9 +162,9 @@ std::vector<ScriptAction> parseScript(const std::string& text, const std::string
       for (const auto& s : specs) list += std::string(list.empty() ? "" : ", ") + s.name;
       inputError(at + ": unknown action \"" + a.action + "\" (known: " + list + ")");
     }
-    std::vector<const char*> allowed = spec->fields;
-    allowed.insert(allowed.begin(), "action");
-    rejectUnknownFields(a.args, allowed, a.where());
+    json fields = a.args;
+    fields.erase("action");
+    rejectUnknownFields(fields, spec->fields, a.where());
     spec->check(a.args, a.where());
     script.push_back(std::move(a));
   }

@@ -12,8 +12,8 @@ void checkViewFields(const nlohmann::json& object, const std::string& where) {
   const auto hi = optionalNumber(object, "max", where);
   optionalBool(object, "false_color", where);
   if (lo && hi && !(*lo < *hi))
-    usageError(where + ": \"min\" (" + nlohmann::json(*lo).dump() + ") must be less than \"max\" (" +
-               nlohmann::json(*hi).dump() + ")");
+    usageError(where + ": \"min\" (" + formatNumber(*lo) + ") must be less than \"max\" (" +
+               formatNumber(*hi) + ")");
 }
 
 void checkCompareFields(const nlohmann::json& object, const std::string& where) {
