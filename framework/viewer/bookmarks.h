@@ -36,4 +36,16 @@ std::vector<Bookmark> parseBookmarks(const std::string& text, const std::string&
 void saveBookmarks(const std::string& path, const std::vector<Bookmark>& bookmarks);
 nlohmann::json bookmarkToJson(const Bookmark& bookmark);
 
+class ParamSet;
+class TechniqueRegistry;
+// Checks the bookmarks against the frame before the first one is shown, as presets are checked:
+// technique ids (Error(Usage)), the "view" AOV, and, for bookmarks without a "scene" or with
+// scene == currentScene, every "params" key and value and the camera's values against the
+// `camera.*` keys, each bookmark on its own copy of `params`. A bookmark of another scene has
+// scene-dependent keys (light<N>.*), so the viewer checks its params when it loads that scene.
+// Messages name the file, the bookmark's index and its name.
+void validateBookmarks(const std::vector<Bookmark>& bookmarks, const ParamSet& params,
+                       const TechniqueRegistry& registry, const std::string& sourceName,
+                       const std::string& currentScene = "");
+
 } // namespace rtlab

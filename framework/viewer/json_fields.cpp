@@ -6,6 +6,7 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
+#include <limits>
 
 namespace rtlab {
 namespace {
@@ -58,7 +59,10 @@ glm::vec3 asVec3(const nlohmann::json& v, const char* field, const std::string& 
   glm::vec3 out;
   for (int i = 0; i < 3; ++i) {
     if (!v[std::size_t(i)].is_number()) wrongType(field, "an array of 3 numbers", v, where);
-    out[i] = float(asNumber(v[std::size_t(i)], field, where));
+    const double x = asNumber(v[std::size_t(i)], field, where);
+    if (!(std::abs(x) <= double(std::numeric_limits<float>::max())))
+      usageError(where + ": " + quoted(field) + " component " + formatNumber(x) + " is out of range");
+    out[i] = float(x);
   }
   return out;
 }

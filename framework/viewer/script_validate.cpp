@@ -2,7 +2,6 @@
 // technique id, key and value the script will use is checked the way `-t` and `--set` check
 // them (frame/selection.cpp, params/param_set.cpp), on a copy of the parameters so that values
 // apply in order.
-#include "frame/aovs.h"
 #include "frame/registry.h"
 #include "frame/stages.h"
 #include "params/param_set.h"
@@ -11,6 +10,7 @@
 #include "util/error.h"
 #include "viewer/json_fields.h"
 #include "viewer/script.h"
+#include "viewer/view_fields.h"
 
 #include <set>
 
@@ -44,13 +44,6 @@ void checkCameraAction(const json& args, ParamSet& params) {
   }
 }
 
-bool isDebugView(const std::string& aov, const TechniqueRegistry& registry) {
-  for (const auto& e : registry.entries())
-    for (const auto& v : e.info.debugViews)
-      if (v.name == aov) return true;
-  return false;
-}
-
 void checkLoadPreset(const std::string& path, ParamSet& params, const TechniqueRegistry& registry) {
   const Preset preset = loadPreset(path); // Error(Input) naming the file
   if (preset.techniques)
@@ -77,9 +70,7 @@ void validateScript(const std::vector<ScriptAction>& script, const ParamSet& par
       } else if (a.action == "camera") {
         checkCameraAction(args, copy);
       } else if (a.action == "view" && args.contains("aov")) {
-        const std::string aov = args["aov"].get<std::string>();
-        if (!isBuiltinAov(aov) && !isDebugView(aov, registry))
-          usageError("unknown AOV '" + aov + "' (see 'rtlab list')");
+        checkViewAov(args["aov"].get<std::string>(), registry);
       } else if (a.action == "load_preset") {
         const std::string file = args["file"].get<std::string>();
         if (!savedPresets.count(file)) checkLoadPreset(file, copy, registry);

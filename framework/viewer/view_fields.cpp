@@ -1,5 +1,7 @@
 #include "viewer/view_fields.h"
 
+#include "frame/aovs.h"
+#include "frame/registry.h"
 #include "util/error.h"
 #include "viewer/json_fields.h"
 
@@ -20,6 +22,14 @@ void checkCompareFields(const nlohmann::json& object, const std::string& where) 
   if (auto mode = optionalString(object, "mode", where))
     requireChoice(*mode, {"reference", "snapshot", "difference", "off"}, "mode", where);
   if (auto divider = optionalNumber(object, "divider", where)) requireRange(*divider, 0.0, 1.0, "divider", where);
+}
+
+void checkViewAov(const std::string& aov, const TechniqueRegistry& registry) {
+  if (isBuiltinAov(aov)) return;
+  for (const auto& e : registry.entries())
+    for (const auto& v : e.info.debugViews)
+      if (v.name == aov) return;
+  usageError("unknown AOV '" + aov + "' (see 'rtlab list')");
 }
 
 } // namespace rtlab

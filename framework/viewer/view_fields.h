@@ -8,11 +8,17 @@
 
 namespace rtlab {
 
+class TechniqueRegistry;
+
 // Optional fields "aov" (string), "mode" ("full" | "pip" | "off"), "min", "max" (numbers,
 // min < max when both are given), "false_color" (boolean). Unknown fields are the caller's check.
 void checkViewFields(const nlohmann::json& object, const std::string& where);
 // Optional fields "mode" ("reference" | "snapshot" | "difference" | "off") and "divider"
 // (number in [0, 1], the split's position from the left edge).
 void checkCompareFields(const nlohmann::json& object, const std::string& where);
+
+// Error(Usage) "unknown AOV 'x'" unless `aov` is a built-in AOV or a debug view of any registered
+// technique (whether that technique is active is known only when the view is applied).
+void checkViewAov(const std::string& aov, const TechniqueRegistry& registry);
 
 } // namespace rtlab

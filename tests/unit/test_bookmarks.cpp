@@ -1,6 +1,8 @@
 // viewer/bookmarks: exact save/load round trips (floats written as their shortest decimals),
 // atomic saving, and malformed files: exit 3 naming the file and the bookmark, exit 2 for a
 // value out of range or choices.
+#include "frame/registry.h"
+#include "params/param_set.h"
 #include "util/error.h"
 #include "viewer/bookmarks.h"
 
@@ -137,4 +139,52 @@ TEST(Bookmarks, FileErrors) {
   const std::string nowhere = (dir / "missing_dir" / "talk.json").string();
   checkCaught(catchError([&] { saveBookmarks(nowhere, {full()}); }), ExitCode::Output, {"talk.json"});
   EXPECT_TRUE(rtlab::test::dirEntries(dir).empty());
+}
+
+namespace {
+
+TechniqueRegistry bookmarkRegistry() {
+  TechniqueRegistry r;
+  TechniqueEntry e;
+  e.info.id = "sh";
+  e.info.stage = "shadow";
+  e.info.title = "sh";
+  e.info.params = {ParamSpec::integer("sh.samples", "Samples", 16, 1, 64)};
+  e.info.debugViews = {{"sh.kernel", 1, ""}};
+  e.create = [] { return std::unique_ptr<Technique>(); }; // never called
+  r.add(e);
+  return r;
+}
+
+ParamSet bookmarkParams(const TechniqueRegistry& r) {
+  ParamSet p;
+  p.declare(r.entries()[0].info.params);
+  p.declare(ParamSpec::real("camera.fov", "Fov", 45, 1, 170));
+  return p;
+}
+
+Caught validate(const std::string& bookmarks, const std::string& currentScene = "") {
+  return catchError([&] {
+    const TechniqueRegistry r = bookmarkRegistry();
+    validateBookmarks(parseBookmarks("{\"bookmarks\": [{\"name\": \"ok\"}, " + bookmarks + "]}", "talk.json"),
+                      bookmarkParams(r), r, "talk.json", currentScene);
+  });
+}
+
+} // namespace
+
+TEST(Bookmarks, ValidationChecksTechniquesKeysValuesAndAovs) {
+  EXPECT_FALSE(validate(R"({"name": "b", "techniques": ["sh", "none"], "params": {"sh.samples": 64},
+                            "view": {"aov": "sh.kernel"}})").thrown);
+  checkCaught(validate(R"({"name": "b", "techniques": ["pcss"]})"), ExitCode::Usage,
+              {"bookmarks 'talk.json' bookmark 1 ('b')", "unknown technique 'pcss'"});
+  checkCaught(validate(R"({"name": "b", "params": {"sh.sample": 2}})"), ExitCode::Usage,
+              {"bookmark 1 ('b')", "unknown key 'sh.sample'"});
+  checkCaught(validate(R"({"name": "b", "params": {"sh.samples": 65}})"), ExitCode::Usage, {"bookmark 1 ('b')", "sh.samples"});
+  checkCaught(validate(R"({"name": "b", "view": {"aov": "sh.blocker"}})"), ExitCode::Usage,
+              {"bookmark 1 ('b')", "unknown AOV 'sh.blocker'"});
+  // Keys of a bookmark for another scene are that scene's: checked when it is loaded.
+  EXPECT_FALSE(validate(R"({"name": "b", "scene": "cornell", "params": {"light3.radius": 1}})").thrown);
+  checkCaught(validate(R"({"name": "b", "scene": "cornell", "params": {"light3.radius": 1}})", "cornell"),
+              ExitCode::Usage, {"bookmark 1 ('b')", "unknown key 'light3.radius'"});
 }

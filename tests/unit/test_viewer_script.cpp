@@ -186,6 +186,7 @@ TEST(ViewerScript, ValuesOutOfRangeOrChoicesAreUsageErrors) {
       {R"({"action": "view", "min": 1, "max": 1})", "\"min\" (1) must be less than \"max\" (1)"},
       {R"({"action": "camera", "position": [1, 1, 1], "target": [1, 1, 1]})", "\"target\" must differ from \"position\""},
       {R"({"action": "screenshot", "file": "shot.jpg"})", "must be a .png file"},
+      {R"({"action": "camera", "target": [1e300, 0, 0]})", "\"target\" component 1e+300 is out of range"},
       {R"({"action": "report", "file": ""})", "\"file\" must not be empty"},
   };
   for (const auto& [action, message] : cases) checkCaught(parseSecond(action), ExitCode::Usage, {"action 1", message});
