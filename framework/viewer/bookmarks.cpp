@@ -87,12 +87,7 @@ nlohmann::ordered_json orderedBookmark(const Bookmark& b) {
 
 std::vector<Bookmark> parseBookmarks(const std::string& text, const std::string& sourceName) {
   const std::string name = fileName(sourceName);
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    inputError(name + " is not valid JSON (at byte " + std::to_string(e.byte) + ")");
-  }
+  const json j = parseJsonText(text, name);
   requireObject(j, name);
   rejectUnknownFields(j, {"schema", "bookmarks"}, name);
   if (auto schema = optionalInteger(j, "schema", name); schema && *schema != 1)

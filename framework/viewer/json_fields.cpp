@@ -69,6 +69,17 @@ glm::vec3 asVec3(const nlohmann::json& v, const char* field, const std::string& 
 
 } // namespace
 
+nlohmann::json parseJsonText(const std::string& text, const std::string& name) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    std::string reason = e.what(); // "[json.exception.parse_error.101] parse error at line 1, ..."
+    if (const auto close = reason.find("] "); reason.rfind("[json.exception.", 0) == 0 && close != std::string::npos)
+      reason = reason.substr(close + 2);
+    inputError(name + " is not valid JSON: " + reason);
+  }
+}
+
 void requireObject(const nlohmann::json& value, const std::string& where) {
   if (!value.is_object()) inputError(where + " must be a JSON object, got " + value.dump());
 }

@@ -15,6 +15,9 @@
 
 namespace rtlab {
 
+// Parses JSON text; Error(Input) "<name> is not valid JSON: <parser's reason>" (syntax errors
+// with line and column, numbers too large for a double).
+nlohmann::json parseJsonText(const std::string& text, const std::string& name);
 // Error(Input) unless `value` is an object.
 void requireObject(const nlohmann::json& value, const std::string& where);
 // Error(Input) naming the first field of `object` not in `allowed`, and listing `allowed`.

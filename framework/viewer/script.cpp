@@ -139,12 +139,7 @@ const std::vector<std::string>& scriptActionNames() {
 
 std::vector<ScriptAction> parseScript(const std::string& text, const std::string& sourceName) {
   const std::string name = scriptName(sourceName);
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    inputError(name + " is not valid JSON (at byte " + std::to_string(e.byte) + ")");
-  }
+  const json j = parseJsonText(text, name);
   if (!j.is_array()) inputError(name + " must be a JSON list of actions, got " + std::string(j.type_name()));
   std::vector<ScriptAction> script;
   for (std::size_t i = 0; i < j.size(); ++i) {

@@ -106,7 +106,9 @@ TEST(ViewerScript, ParsesEveryAction) {
 
 TEST(ViewerScript, MalformedDocumentsAreInputErrors) {
   checkCaught(catchError([] { parseScript("[{\"action\": ", "demo.json"); }), ExitCode::Input,
-              {"script 'demo.json'", "not valid JSON"});
+              {"script 'demo.json'", "not valid JSON", "line 1"});
+  checkCaught(catchError([] { parseScript("[{\"action\": \"wait\", \"frames\": 1e400}]", "demo.json"); }),
+              ExitCode::Input, {"script 'demo.json'", "not valid JSON", "overflow"});
   checkCaught(catchError([] { parseScript("{\"action\": \"quit\"}", "demo.json"); }), ExitCode::Input,
               {"script 'demo.json'", "JSON list of actions"});
   checkCaught(parseSecond("42"), ExitCode::Input, {"action 1", "must be a JSON object"});
