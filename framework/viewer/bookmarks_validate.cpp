@@ -19,7 +19,9 @@ void validateBookmarks(const std::vector<Bookmark>& bookmarks, const ParamSet& p
       if (b.techniques)
         for (const auto& id : *b.techniques)
           if (id != "none") registry.get(id);
-      if (b.view.contains("aov")) checkViewAov(b.view["aov"].get<std::string>(), registry);
+      checkViewFields(b.view, "\"view\""); // types and choices, for bookmarks built in code
+      checkCompareFields(b.compare, "\"compare\"");
+      if (b.view.contains("aov")) checkViewAov(b.view.at("aov").get<std::string>(), registry);
       if (b.scene && *b.scene != currentScene) continue;
       ParamSet copy = params;
       for (const auto& [key, value] : b.params.items()) copy.setJson(key, value);

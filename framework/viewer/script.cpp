@@ -137,6 +137,22 @@ const std::vector<std::string>& scriptActionNames() {
   return names;
 }
 
+void checkScriptAction(const ScriptAction& a) {
+  const std::string at = scriptName(a.source) + " action " + std::to_string(a.index);
+  requireObject(a.args, at);
+  const auto& specs = actionSpecs();
+  auto spec = std::find_if(specs.begin(), specs.end(), [&](const ActionSpec& s) { return a.action == s.name; });
+  if (spec == specs.end()) {
+    std::string list;
+    for (const auto& s : specs) list += std::string(list.empty() ? "" : ", ") + s.name;
+    inputError(at + ": unknown action \"" + a.action + "\" (known: " + list + ")");
+  }
+  json fields = a.args;
+  fields.erase("action");
+  rejectUnknownFields(fields, spec->fields, a.where());
+  spec->check(a.args, a.where());
+}
+
 std::vector<ScriptAction> parseScript(const std::string& text, const std::string& sourceName) {
   const std::string name = scriptName(sourceName);
   const json j = parseJsonText(text, name);
@@ -150,17 +166,7 @@ std::vector<ScriptAction> parseScript(const std::string& text, const std::string
     const std::string at = name + " action " + std::to_string(i);
     requireObject(a.args, at);
     a.action = requireString(a.args, "action", at);
-    const auto& specs = actionSpecs();
-    auto spec = std::find_if(specs.begin(), specs.end(), [&](const ActionSpec& s) { return a.action == s.name; });
-    if (spec == specs.end()) {
-      std::string list;
-      for (const auto& s : specs) list += std::string(list.empty() ? "" : ", ") + s.name;
-      inputError(at + ": unknown action \"" + a.action + "\" (known: " + list + ")");
-    }
-    json fields = a.args;
-    fields.erase("action");
-    rejectUnknownFields(fields, spec->fields, a.where());
-    spec->check(a.args, a.where());
+    checkScriptAction(a);
     script.push_back(std::move(a));
   }
   return script;

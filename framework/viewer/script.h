@@ -60,6 +60,9 @@ const std::vector<std::string>& scriptActionNames();
 // (validateScript below), so errors still come before anything runs.
 std::vector<ScriptAction> parseScript(const std::string& text, const std::string& sourceName);
 std::vector<ScriptAction> loadScript(const std::string& path); // Error(Input) if unreadable
+// The checks parseScript makes on one action (its name, fields, JSON types and ranges), for
+// actions built in code; validateScript makes them too, so it never reads a missing field.
+void checkScriptAction(const ScriptAction& action);
 
 class ParamSet;
 class TechniqueRegistry;

@@ -20,8 +20,8 @@ namespace {
 using nlohmann::json;
 
 void checkTechniqueAction(const json& args, const TechniqueRegistry& registry) {
-  const std::string stage = args["stage"].get<std::string>();
-  const std::string id = args["id"].get<std::string>();
+  const std::string stage = args.at("stage").get<std::string>();
+  const std::string id = args.at("id").get<std::string>();
   if (!findStage(stage)) {
     std::string list;
     for (const auto& s : stages()) list += (list.empty() ? "" : ", ") + s.id;
@@ -38,9 +38,9 @@ void checkCameraAction(const json& args, ParamSet& params) {
       {"position", "camera.position"}, {"target", "camera.target"}, {"fov", "camera.fov"}};
   for (const auto& [field, key] : fields) {
     if (!args.contains(field)) continue;
-    if (params.has(key)) params.setJson(key, args[field]);
-    else if (std::string(field) == "fov" && !(args[field].get<double>() >= 1.0 && args[field].get<double>() <= 170.0))
-      usageError("\"fov\" = " + args[field].dump() + " is out of range [1, 170]");
+    if (params.has(key)) params.setJson(key, args.at(field));
+    else if (std::string(field) == "fov" && !(args.at(field).get<double>() >= 1.0 && args.at(field).get<double>() <= 170.0))
+      usageError("\"fov\" = " + args.at(field).dump() + " is out of range [1, 170]");
   }
 }
 
@@ -59,26 +59,27 @@ void validateScript(const std::vector<ScriptAction>& script, const ParamSet& par
   ParamSet copy = params;
   std::set<std::string> savedPresets; // written by an earlier "save_preset": checked when saved
   for (const ScriptAction& a : script) {
+    checkScriptAction(a); // so every field read below exists with its type
     try {
       const json& args = a.args;
       if (a.action == "technique") {
         checkTechniqueAction(args, registry);
       } else if (a.action == "set") {
-        copy.setJson(args["key"].get<std::string>(), args["value"]);
+        copy.setJson(args.at("key").get<std::string>(), args.at("value"));
       } else if (a.action == "reset") {
-        copy.reset(args["key"].get<std::string>());
+        copy.reset(args.at("key").get<std::string>());
       } else if (a.action == "camera") {
         checkCameraAction(args, copy);
       } else if (a.action == "view" && args.contains("aov")) {
-        checkViewAov(args["aov"].get<std::string>(), registry);
+        checkViewAov(args.at("aov").get<std::string>(), registry);
       } else if (a.action == "load_preset") {
-        const std::string file = args["file"].get<std::string>();
+        const std::string file = args.at("file").get<std::string>();
         if (!savedPresets.count(file)) checkLoadPreset(file, copy, registry);
       } else if (a.action == "save_preset") {
-        checkOutputPath(args["file"].get<std::string>());
-        savedPresets.insert(args["file"].get<std::string>());
+        checkOutputPath(args.at("file").get<std::string>());
+        savedPresets.insert(args.at("file").get<std::string>());
       } else if (a.action == "screenshot" || a.action == "report") {
-        checkOutputPath(args["file"].get<std::string>());
+        checkOutputPath(args.at("file").get<std::string>());
       }
     } catch (const Error& e) {
       throw Error(e.code(), a.where() + ": " + e.what());
@@ -89,7 +90,8 @@ void validateScript(const std::vector<ScriptAction>& script, const ParamSet& par
 void validateScriptBookmarks(const std::vector<ScriptAction>& script, std::size_t bookmarkCount) {
   for (const ScriptAction& a : script) {
     if (a.action != "bookmark") continue;
-    const long long index = a.args["index"].get<long long>();
+    checkScriptAction(a);
+    const long long index = a.args.at("index").get<long long>();
     if (index < 0 || static_cast<unsigned long long>(index) >= bookmarkCount)
       usageError(a.where() + ": bookmark " + std::to_string(index) + " does not exist (" +
                  (bookmarkCount == 0 ? std::string("no bookmarks were loaded; see --bookmarks")

@@ -277,3 +277,18 @@ TEST(ViewerScript, BookmarkIndicesAreCheckedAgainstTheBookmarks) {
   checkCaught(catchError([&] { validateScriptBookmarks(script, 0); }), ExitCode::Usage,
               {"action 0", "no bookmarks were loaded"});
 }
+
+TEST(ViewerScript, ActionsBuiltInCodeAreCheckedToo) {
+  ScriptAction a;
+  a.action = "set";
+  a.index = 4;
+  a.source = "viewer";
+  a.args = {{"key", "sh.samples"}}; // no "value"
+  checkCaught(catchError([&] { checkScriptAction(a); }), ExitCode::Input, {"script 'viewer' action 4 (\"set\")", "\"value\""});
+  const TechniqueRegistry r = registry();
+  checkCaught(catchError([&] { validateScript({a}, params(r), r); }), ExitCode::Input, {"missing field \"value\""});
+  a.args["value"] = 8;
+  EXPECT_FALSE(catchError([&] { validateScript({a}, params(r), r); }).thrown);
+  a.action = "teleport";
+  checkCaught(catchError([&] { checkScriptAction(a); }), ExitCode::Input, {"action 4", "unknown action \"teleport\""});
+}
