@@ -108,7 +108,7 @@ std::vector<Bookmark> loadBookmarks(const std::string& path) {
 
 nlohmann::json bookmarkToJson(const Bookmark& bookmark) {
   // Same content as the saved form; nlohmann::json keeps keys sorted.
-  return json::parse(orderedBookmark(bookmark).dump());
+  return json(orderedBookmark(bookmark));
 }
 
 void saveBookmarks(const std::string& path, const std::vector<Bookmark>& bookmarks) {
@@ -116,7 +116,8 @@ void saveBookmarks(const std::string& path, const std::vector<Bookmark>& bookmar
   j["schema"] = 1;
   j["bookmarks"] = nlohmann::ordered_json::array();
   for (const auto& b : bookmarks) j["bookmarks"].push_back(orderedBookmark(b));
-  writeTextAtomically(path, j.dump(2) + "\n");
+  // Names are the user's text: invalid UTF-8 is replaced rather than failing the save.
+  writeTextAtomically(path, j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
 }
 
 } // namespace rtlab

@@ -13,9 +13,16 @@ namespace {
 
 std::string quoted(const char* field) { return std::string("\"") + field + "\""; }
 
+// A JSON value for a one-line message: compact, invalid UTF-8 replaced, long values cut.
+std::string brief(const nlohmann::json& v) {
+  std::string text = v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  constexpr std::size_t kMax = 60;
+  return text.size() <= kMax ? text : text.substr(0, kMax - 3) + "...";
+}
+
 [[noreturn]] void wrongType(const char* field, const char* expected, const nlohmann::json& got,
                             const std::string& where) {
-  inputError(where + ": " + quoted(field) + " must be " + expected + ", got " + got.dump());
+  inputError(where + ": " + quoted(field) + " must be " + expected + ", got " + brief(got));
 }
 
 const nlohmann::json* find(const nlohmann::json& object, const char* field) {
@@ -45,7 +52,7 @@ long long asInteger(const nlohmann::json& v, const char* field, const std::strin
   if (!v.is_number_integer()) wrongType(field, "an integer", v, where);
   // get<long long> would wrap an unsigned value above LLONG_MAX to a negative one.
   if (v.is_number_unsigned() && v.get<unsigned long long>() > static_cast<unsigned long long>(LLONG_MAX))
-    usageError(where + ": " + quoted(field) + " is too large: " + v.dump());
+    usageError(where + ": " + quoted(field) + " is too large: " + brief(v));
   return v.get<long long>();
 }
 
@@ -81,7 +88,7 @@ nlohmann::json parseJsonText(const std::string& text, const std::string& name) {
 }
 
 void requireObject(const nlohmann::json& value, const std::string& where) {
-  if (!value.is_object()) inputError(where + " must be a JSON object, got " + value.dump());
+  if (!value.is_object()) inputError(where + " must be a JSON object, got " + brief(value));
 }
 
 void rejectUnknownFields(const nlohmann::json& object, const std::vector<const char*>& allowed,
@@ -141,7 +148,7 @@ void requireParamValueShape(const nlohmann::json& value, const std::string& what
   const bool numbers = value.is_array() && !value.empty() &&
                        std::all_of(value.begin(), value.end(), [](const nlohmann::json& x) { return x.is_number(); });
   if (value.is_number() || value.is_boolean() || value.is_string() || numbers) return;
-  inputError(where + ": " + what + " must be a number, boolean, string or array of numbers, got " + value.dump());
+  inputError(where + ": " + what + " must be a number, boolean, string or array of numbers, got " + brief(value));
 }
 
 void requireChoice(const std::string& value, std::initializer_list<const char*> choices, const char* field,

@@ -174,6 +174,13 @@ TEST(ViewerScript, WrongJsonTypesAreInputErrors) {
   for (const auto& [action, message] : cases) checkCaught(parseSecond(action), ExitCode::Input, {"action 1", message});
 }
 
+TEST(ViewerScript, LongValuesAreCutInMessages) {
+  const Caught c = parseOne(R"({"action": "wait", "frames": ")" + std::string(500, 'x') + "\"}");
+  checkCaught(c, ExitCode::Input, {"\"frames\" must be an integer, got \"xxxx"});
+  EXPECT_LT(c.message.size(), 150u) << c.message;
+  EXPECT_EQ(c.message.substr(c.message.size() - 3), "...");
+}
+
 TEST(ViewerScript, ValuesOutOfRangeOrChoicesAreUsageErrors) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {R"({"action": "wait", "frames": -1})", "\"frames\" must be >= 0"},
