@@ -63,7 +63,17 @@ bool CameraController::orbit(float yaw, float pitch) {
 bool CameraController::update(const CameraInput& in) {
   setViewport(in.viewport);
   const Camera before = m_camera;
+  // A step that would take the camera out of +-maxCoordinate is undone, so the camera always
+  // fits the `camera.*` keys' range and stays finite however far one zooms out or flies.
+  Camera lastGood = m_camera;
+  auto keepInside = [&] {
+    const float m = maxCoordinate;
+    auto inside = [m](const glm::vec3& p) { return finite(p) && glm::all(glm::lessThanEqual(glm::abs(p), glm::vec3(m))); };
+    if (!inside(m_camera.position) || !inside(m_camera.target)) m_camera = lastGood;
+    lastGood = m_camera;
+  };
   if (in.orbit && finite(in.mouseDelta)) orbit(-in.mouseDelta.x * orbitSpeed, in.mouseDelta.y * orbitSpeed);
+  keepInside();
 
   if (in.pan && finite(in.mouseDelta) && in.viewport.y > 0) {
     // One pixel at the target's distance spans 2 d tan(fov/2) / height scene units, so the point
@@ -75,6 +85,7 @@ bool CameraController::update(const CameraInput& in) {
     m_camera.position += move;
     m_camera.target += move;
   }
+  keepInside();
 
   if (in.wheel != 0 && std::isfinite(in.wheel)) {
     // Each step scales the distance by (1 - zoomStep): geometric, so the target is never reached.
@@ -87,6 +98,7 @@ bool CameraController::update(const CameraInput& in) {
       if (std::isfinite(next) && next > 0) m_camera.position = m_camera.target + offset * (next / distance);
     }
   }
+  keepInside();
 
   if (in.dt > 0 && std::isfinite(in.dt) && finite(in.fly) && glm::length(in.fly) > 0) {
     const Basis b = viewBasis(m_camera);
@@ -97,6 +109,7 @@ bool CameraController::update(const CameraInput& in) {
     m_camera.position += move;
     m_camera.target += move;
   }
+  keepInside();
   return m_camera.position != before.position || m_camera.target != before.target;
 }
 

@@ -51,6 +51,9 @@ public:
   // Orbit keeps the pitch (elevation above the target's horizontal plane) within +-maxPitch,
   // radians, so the view never passes over a pole and flips.
   float maxPitch = glm::radians(89.0f);
+  // update() undoes a step that would take the position or target beyond +-maxCoordinate on
+  // any axis: the range of the `camera.position` and `camera.target` keys.
+  float maxCoordinate = 1.0e5f;
 
 private:
   Camera m_home, m_camera;

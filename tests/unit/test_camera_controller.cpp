@@ -137,6 +137,27 @@ TEST(CameraController, ZoomNeverReachesOrPassesTheTarget) {
   EXPECT_GT(glm::dot(forwardOf(cc.camera()), dir0), 0.999f);
 }
 
+TEST(CameraController, ZoomingOutAndFlyingStayWithinTheKeysRange) {
+  CameraController cc(testCamera());
+  CameraInput in;
+  in.wheel = -20;
+  for (int i = 0; i < 500; ++i) cc.update(in);
+  const float far = distanceOf(cc.camera());
+  EXPECT_GT(far, 1000.0f) << "zooming out stopped early";
+  EXPECT_LE(glm::length(cc.camera().position), std::sqrt(3.0f) * cc.maxCoordinate);
+  EXPECT_LE(std::max({std::abs(cc.camera().position.x), std::abs(cc.camera().position.y), std::abs(cc.camera().position.z)}),
+            cc.maxCoordinate);
+  in = CameraInput{};
+  in.fly = {0, 0, -1};
+  in.dt = 1000;
+  in.fast = true;
+  for (int i = 0; i < 100; ++i) cc.update(in);
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_LE(std::abs(cc.camera().position[axis]), cc.maxCoordinate);
+    EXPECT_LE(std::abs(cc.camera().target[axis]), cc.maxCoordinate);
+  }
+}
+
 TEST(CameraController, FlyMovesAlongTheViewAxes) {
   CameraController cc(testCamera());
   const glm::vec3 f = forwardOf(cc.camera());
