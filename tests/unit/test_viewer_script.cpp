@@ -299,3 +299,10 @@ TEST(ViewerScript, ActionsBuiltInCodeAreCheckedToo) {
   a.action = "teleport";
   checkCaught(catchError([&] { checkScriptAction(a); }), ExitCode::Input, {"action 4", "unknown action \"teleport\""});
 }
+
+TEST(ViewerScript, TheReferenceDocumentsEveryAction) {
+  const std::string doc = rtlab::test::slurp(std::string(RTLAB_SOURCE_DIR) + "/docs/viewer-scripts.md");
+  ASSERT_FALSE(doc.empty());
+  for (const auto& name : scriptActionNames())
+    EXPECT_NE(doc.find("| `" + name + "` |"), std::string::npos) << "docs/viewer-scripts.md has no row for " << name;
+}
