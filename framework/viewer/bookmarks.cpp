@@ -16,7 +16,9 @@ namespace {
 
 using nlohmann::json;
 
-std::string fileName(const std::string& source) { return "bookmarks '" + source + "'"; }
+std::string fileName(const std::string& source) {
+  return "bookmarks '" + source + "'";
+}
 
 void parseCamera(const json& camera, Bookmark& b, const std::string& where) {
   requireObject(camera, where);
@@ -43,7 +45,8 @@ Bookmark parseBookmark(const json& j, const std::string& at) {
   if (j.contains("params")) {
     const json& params = j["params"];
     requireObject(params, where + ": \"params\"");
-    for (const auto& [key, value] : params.items()) requireParamValueShape(value, "\"params\" value of '" + key + "'", where);
+    for (const auto& [key, value] : params.items())
+      requireParamValueShape(value, "\"params\" value of '" + key + "'", where);
     b.params = params;
   }
   if (j.contains("camera")) parseCamera(j["camera"], b, where + ": \"camera\"");
@@ -96,7 +99,8 @@ std::vector<Bookmark> parseBookmarks(const std::string& text, const std::string&
   const json& list = j["bookmarks"];
   if (!list.is_array()) inputError(name + ": \"bookmarks\" must be an array, got " + std::string(list.type_name()));
   std::vector<Bookmark> out;
-  for (std::size_t i = 0; i < list.size(); ++i) out.push_back(parseBookmark(list[i], name + " bookmark " + std::to_string(i)));
+  for (std::size_t i = 0; i < list.size(); ++i)
+    out.push_back(parseBookmark(list[i], name + " bookmark " + std::to_string(i)));
   return out;
 }
 
@@ -115,7 +119,8 @@ void saveBookmarks(const std::string& path, const std::vector<Bookmark>& bookmar
   nlohmann::ordered_json j;
   j["schema"] = 1;
   j["bookmarks"] = nlohmann::ordered_json::array();
-  for (const auto& b : bookmarks) j["bookmarks"].push_back(orderedBookmark(b));
+  for (const auto& b : bookmarks)
+    j["bookmarks"].push_back(orderedBookmark(b));
   // Names are the user's text: invalid UTF-8 is replaced rather than failing the save.
   writeTextAtomically(path, j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
 }

@@ -24,8 +24,10 @@ void validateBookmarks(const std::vector<Bookmark>& bookmarks, const ParamSet& p
       if (b.view.contains("aov")) checkViewAov(b.view.at("aov").get<std::string>(), registry);
       if (b.scene && *b.scene != currentScene) continue;
       ParamSet copy = params;
-      for (const auto& [key, value] : b.params.items()) copy.setJson(key, value);
-      if (b.cameraPosition && copy.has("camera.position")) copy.setJson("camera.position", jsonFromVec3(*b.cameraPosition));
+      for (const auto& [key, value] : b.params.items())
+        copy.setJson(key, value);
+      if (b.cameraPosition && copy.has("camera.position"))
+        copy.setJson("camera.position", jsonFromVec3(*b.cameraPosition));
       if (b.cameraTarget && copy.has("camera.target")) copy.setJson("camera.target", jsonFromVec3(*b.cameraTarget));
       if (b.cameraFov && copy.has("camera.fov")) copy.setJson("camera.fov", jsonNumberFromFloat(*b.cameraFov));
     } catch (const Error& e) {

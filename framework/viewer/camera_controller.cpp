@@ -12,8 +12,12 @@ constexpr glm::vec3 kWorldUp{0, 1, 0};
 constexpr float kFrameMargin = 1.05f; // frame() leaves 5% around the bounding sphere
 constexpr float kMinRadius = 0.05f;
 
-bool finite(const glm::vec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::vec2& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y);
+}
+bool finite(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 // The camera's orthonormal view axes; robust when position == target or forward is parallel to up.
 struct Basis {
@@ -35,9 +39,15 @@ Basis viewBasis(const Camera& c) {
 
 CameraController::CameraController(const Camera& home) : m_home(home), m_camera(home) {}
 
-void CameraController::setHome(const Camera& home) { m_home = home; }
-void CameraController::setCamera(const Camera& camera) { m_camera = camera; }
-void CameraController::reset() { m_camera = m_home; }
+void CameraController::setHome(const Camera& home) {
+  m_home = home;
+}
+void CameraController::setCamera(const Camera& camera) {
+  m_camera = camera;
+}
+void CameraController::reset() {
+  m_camera = m_home;
+}
 
 void CameraController::setViewport(const glm::ivec2& viewport) {
   if (viewport.x > 0 && viewport.y > 0) m_viewport = viewport;
@@ -68,7 +78,9 @@ bool CameraController::update(const CameraInput& in) {
   Camera lastGood = m_camera;
   auto keepInside = [&] {
     const float m = maxCoordinate;
-    auto inside = [m](const glm::vec3& p) { return finite(p) && glm::all(glm::lessThanEqual(glm::abs(p), glm::vec3(m))); };
+    auto inside = [m](const glm::vec3& p) {
+      return finite(p) && glm::all(glm::lessThanEqual(glm::abs(p), glm::vec3(m)));
+    };
     if (!inside(m_camera.position) || !inside(m_camera.target)) m_camera = lastGood;
     lastGood = m_camera;
   };
@@ -132,7 +144,7 @@ void CameraController::frame(const glm::vec3& lo, const glm::vec3& hi) {
   bounds.extend(lo);
   bounds.extend(hi);
   fitClipPlanes(m_camera, bounds);
-  flySpeed = radius;          // crosses the scene in about two seconds
+  flySpeed = radius; // crosses the scene in about two seconds
   minDistance = radius * 1e-3f;
 }
 

@@ -46,8 +46,8 @@ public:
   // Speeds: radians per pixel of drag, fraction of the target distance per wheel step (used in
   // [0, 0.9]), and scene units per second of flying (scaled by the scene's size in frame()).
   float orbitSpeed = 0.005f, zoomStep = 0.1f, flySpeed = 2.0f;
-  float fastFactor = 4.0f;     // fly speed multiplier while shift is held
-  float minDistance = 1e-3f;   // zoom stops this close to the target (scaled in frame())
+  float fastFactor = 4.0f;   // fly speed multiplier while shift is held
+  float minDistance = 1e-3f; // zoom stops this close to the target (scaled in frame())
   // Orbit keeps the pitch (elevation above the target's horizontal plane) within +-maxPitch,
   // radians, so the view never passes over a pole and flips.
   float maxPitch = glm::radians(89.0f);

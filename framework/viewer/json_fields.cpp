@@ -11,7 +11,9 @@
 namespace rtlab {
 namespace {
 
-std::string quoted(const char* field) { return std::string("\"") + field + "\""; }
+std::string quoted(const char* field) {
+  return std::string("\"") + field + "\"";
+}
 
 // A JSON value for a one-line message: compact, invalid UTF-8 replaced, long values cut.
 std::string brief(const nlohmann::json& v) {
@@ -95,20 +97,32 @@ void rejectUnknownFields(const nlohmann::json& object, const std::vector<const c
                          const std::string& where) {
   for (const auto& [name, value] : object.items()) {
     bool known = false;
-    for (const char* a : allowed) known = known || name == a;
+    for (const char* a : allowed)
+      known = known || name == a;
     if (known) continue;
     std::string list;
-    for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+    for (const char* a : allowed)
+      list += std::string(list.empty() ? "" : ", ") + a;
     inputError(where + ": unknown field \"" + name + "\"" +
                (list.empty() ? std::string(" (it takes no fields)") : " (known: " + list + ")"));
   }
 }
 
-std::string requireString(const nlohmann::json& o, const char* f, const std::string& w) { return asString(require(o, f, w), f, w); }
-double requireNumber(const nlohmann::json& o, const char* f, const std::string& w) { return asNumber(require(o, f, w), f, w); }
-long long requireInteger(const nlohmann::json& o, const char* f, const std::string& w) { return asInteger(require(o, f, w), f, w); }
-bool requireBool(const nlohmann::json& o, const char* f, const std::string& w) { return asBool(require(o, f, w), f, w); }
-glm::vec3 requireVec3(const nlohmann::json& o, const char* f, const std::string& w) { return asVec3(require(o, f, w), f, w); }
+std::string requireString(const nlohmann::json& o, const char* f, const std::string& w) {
+  return asString(require(o, f, w), f, w);
+}
+double requireNumber(const nlohmann::json& o, const char* f, const std::string& w) {
+  return asNumber(require(o, f, w), f, w);
+}
+long long requireInteger(const nlohmann::json& o, const char* f, const std::string& w) {
+  return asInteger(require(o, f, w), f, w);
+}
+bool requireBool(const nlohmann::json& o, const char* f, const std::string& w) {
+  return asBool(require(o, f, w), f, w);
+}
+glm::vec3 requireVec3(const nlohmann::json& o, const char* f, const std::string& w) {
+  return asVec3(require(o, f, w), f, w);
+}
 
 std::optional<std::string> optionalString(const nlohmann::json& o, const char* f, const std::string& w) {
   const nlohmann::json* v = find(o, f);

@@ -27,7 +27,8 @@ void atLeastOne(const json& args, const std::vector<const char*>& fields, const 
   for (const char* f : fields)
     if (args.contains(f)) return;
   std::string list;
-  for (const char* f : fields) list += std::string(list.empty() ? "" : ", ") + "\"" + f + "\"";
+  for (const char* f : fields)
+    list += std::string(list.empty() ? "" : ", ") + "\"" + f + "\"";
   inputError(where + ": needs at least one of " + list);
 }
 
@@ -56,7 +57,9 @@ void checkSet(const json& a, const std::string& w) {
   if (!a.contains("value")) inputError(w + ": missing field \"value\"");
   requireParamValueShape(a["value"], "\"value\"", w);
 }
-void checkReset(const json& a, const std::string& w) { requireString(a, "key", w); }
+void checkReset(const json& a, const std::string& w) {
+  requireString(a, "key", w);
+}
 void checkCamera(const json& a, const std::string& w) {
   atLeastOne(a, {"position", "target", "fov"}, w);
   const auto position = optionalVec3(a, "position", w);
@@ -79,7 +82,9 @@ void checkCompare(const json& a, const std::string& w) {
   checkCompareFields(a, w);
 }
 void checkNothing(const json&, const std::string&) {}
-void checkWait(const json& a, const std::string& w) { nonNegative(requireInteger(a, "frames", w), "frames", w); }
+void checkWait(const json& a, const std::string& w) {
+  nonNegative(requireInteger(a, "frames", w), "frames", w);
+}
 void checkWaitSamples(const json& a, const std::string& w) {
   nonNegative(requireInteger(a, "samples", w), "samples", w);
   if (auto t = optionalNumber(a, "timeout_s", w); t && !(*t > 0))
@@ -89,12 +94,18 @@ void checkScreenshot(const json& a, const std::string& w) {
   const std::string file = requireFile(a, w);
   if (lowerExtension(file) != ".png") usageError(w + ": \"file\" must be a .png file, got '" + file + "'");
 }
-void checkFile(const json& a, const std::string& w) { requireFile(a, w); }
+void checkFile(const json& a, const std::string& w) {
+  requireFile(a, w);
+}
 void checkRenderScale(const json& a, const std::string& w) {
   requireRange(requireNumber(a, "value", w), kRenderScaleMin, kRenderScaleMax, "value", w);
 }
-void checkLecture(const json& a, const std::string& w) { requireBool(a, "on", w); }
-void checkBookmark(const json& a, const std::string& w) { nonNegative(requireInteger(a, "index", w), "index", w); }
+void checkLecture(const json& a, const std::string& w) {
+  requireBool(a, "on", w);
+}
+void checkBookmark(const json& a, const std::string& w) {
+  nonNegative(requireInteger(a, "index", w), "index", w);
+}
 
 const std::vector<ActionSpec>& actionSpecs() {
   static const std::vector<ActionSpec> specs = {
@@ -120,7 +131,9 @@ const std::vector<ActionSpec>& actionSpecs() {
   return specs;
 }
 
-std::string scriptName(const std::string& source) { return "script '" + source + "'"; }
+std::string scriptName(const std::string& source) {
+  return "script '" + source + "'";
+}
 
 } // namespace
 
@@ -131,7 +144,8 @@ std::string ScriptAction::where() const {
 const std::vector<std::string>& scriptActionNames() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> out;
-    for (const auto& s : actionSpecs()) out.push_back(s.name);
+    for (const auto& s : actionSpecs())
+      out.push_back(s.name);
     return out;
   }();
   return names;
@@ -144,7 +158,8 @@ void checkScriptAction(const ScriptAction& a) {
   auto spec = std::find_if(specs.begin(), specs.end(), [&](const ActionSpec& s) { return a.action == s.name; });
   if (spec == specs.end()) {
     std::string list;
-    for (const auto& s : specs) list += std::string(list.empty() ? "" : ", ") + s.name;
+    for (const auto& s : specs)
+      list += std::string(list.empty() ? "" : ", ") + s.name;
     inputError(at + ": unknown action \"" + a.action + "\" (known: " + list + ")");
   }
   json fields = a.args;

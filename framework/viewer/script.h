@@ -46,7 +46,7 @@ struct ScriptAction {
 };
 
 // Defaults and limits of fields (docs/viewer-scripts.md).
-inline constexpr double kScriptSampleTimeoutDefault = 600.0; // wait_samples "timeout_s", seconds
+inline constexpr double kScriptSampleTimeoutDefault = 600.0;          // wait_samples "timeout_s", seconds
 inline constexpr double kRenderScaleMin = 0.1, kRenderScaleMax = 1.0; // render_scale "value"
 
 // Every action name, in the order docs/viewer-scripts.md lists them.

@@ -24,7 +24,8 @@ void checkTechniqueAction(const json& args, const TechniqueRegistry& registry) {
   const std::string id = args.at("id").get<std::string>();
   if (!findStage(stage)) {
     std::string list;
-    for (const auto& s : stages()) list += (list.empty() ? "" : ", ") + s.id;
+    for (const auto& s : stages())
+      list += (list.empty() ? "" : ", ") + s.id;
     usageError("unknown stage '" + stage + "' (known: " + list + ")");
   }
   if (id == "off") return;
@@ -38,8 +39,10 @@ void checkCameraAction(const json& args, ParamSet& params) {
       {"position", "camera.position"}, {"target", "camera.target"}, {"fov", "camera.fov"}};
   for (const auto& [field, key] : fields) {
     if (!args.contains(field)) continue;
-    if (params.has(key)) params.setJson(key, args.at(field));
-    else if (std::string(field) == "fov" && !(args.at(field).get<double>() >= 1.0 && args.at(field).get<double>() <= 170.0))
+    if (params.has(key))
+      params.setJson(key, args.at(field));
+    else if (std::string(field) == "fov" &&
+             !(args.at(field).get<double>() >= 1.0 && args.at(field).get<double>() <= 170.0))
       usageError("\"fov\" = " + args.at(field).dump() + " is out of range [1, 170]");
   }
 }
@@ -95,7 +98,8 @@ void validateScriptBookmarks(const std::vector<ScriptAction>& script, std::size_
     if (index < 0 || static_cast<unsigned long long>(index) >= bookmarkCount)
       usageError(a.where() + ": bookmark " + std::to_string(index) + " does not exist (" +
                  (bookmarkCount == 0 ? std::string("no bookmarks were loaded; see --bookmarks")
-                                     : "there are " + std::to_string(bookmarkCount) + ", numbered from 0") + ")");
+                                     : "there are " + std::to_string(bookmarkCount) + ", numbered from 0") +
+                 ")");
   }
 }
 

@@ -14,10 +14,10 @@
 #include <vector>
 
 using namespace rtlab;
+using nlohmann::json;
 using rtlab::test::catchError;
 using rtlab::test::Caught;
 using rtlab::test::checkCaught;
-using nlohmann::json;
 
 namespace {
 
@@ -47,7 +47,9 @@ void expectSame(const Bookmark& a, const Bookmark& b) {
   EXPECT_EQ(a.compare, b.compare);
 }
 
-Caught parse(const std::string& text) { return catchError([&] { parseBookmarks(text, "talk.json"); }); }
+Caught parse(const std::string& text) {
+  return catchError([&] { parseBookmarks(text, "talk.json"); });
+}
 
 // A file whose bookmark 1 is `second`.
 Caught parseSecond(const std::string& second) {
@@ -175,12 +177,14 @@ Caught validate(const std::string& bookmarks, const std::string& currentScene = 
 
 TEST(Bookmarks, ValidationChecksTechniquesKeysValuesAndAovs) {
   EXPECT_FALSE(validate(R"({"name": "b", "techniques": ["sh", "none"], "params": {"sh.samples": 64},
-                            "view": {"aov": "sh.kernel"}})").thrown);
+                            "view": {"aov": "sh.kernel"}})")
+                   .thrown);
   checkCaught(validate(R"({"name": "b", "techniques": ["pcss"]})"), ExitCode::Usage,
               {"bookmarks 'talk.json' bookmark 1 ('b')", "unknown technique 'pcss'"});
   checkCaught(validate(R"({"name": "b", "params": {"sh.sample": 2}})"), ExitCode::Usage,
               {"bookmark 1 ('b')", "unknown key 'sh.sample'"});
-  checkCaught(validate(R"({"name": "b", "params": {"sh.samples": 65}})"), ExitCode::Usage, {"bookmark 1 ('b')", "sh.samples"});
+  checkCaught(validate(R"({"name": "b", "params": {"sh.samples": 65}})"), ExitCode::Usage,
+              {"bookmark 1 ('b')", "sh.samples"});
   checkCaught(validate(R"({"name": "b", "view": {"aov": "sh.blocker"}})"), ExitCode::Usage,
               {"bookmark 1 ('b')", "unknown AOV 'sh.blocker'"});
   // Keys of a bookmark for another scene are that scene's: checked when it is loaded.

@@ -23,8 +23,12 @@ Camera testCamera() {
   return c;
 }
 
-float distanceOf(const Camera& c) { return glm::length(c.position - c.target); }
-glm::vec3 forwardOf(const Camera& c) { return glm::normalize(c.target - c.position); }
+float distanceOf(const Camera& c) {
+  return glm::length(c.position - c.target);
+}
+glm::vec3 forwardOf(const Camera& c) {
+  return glm::normalize(c.target - c.position);
+}
 
 // Window pixel (x right, y down) of a world point seen by the camera in a viewport.
 glm::vec3 project(const Camera& c, const glm::ivec2& viewport, const glm::vec3& p) {
@@ -79,7 +83,8 @@ TEST(CameraController, PitchIsClampedShortOfThePoles) {
   for (float dy : {5000.0f, -5000.0f}) {
     CameraController cc(testCamera());
     const glm::vec3 horizontal0 = glm::normalize(glm::vec3(forwardOf(cc.camera()).x, 0, forwardOf(cc.camera()).z));
-    for (int i = 0; i < 10; ++i) cc.update(drag({0, dy}, true));
+    for (int i = 0; i < 10; ++i)
+      cc.update(drag({0, dy}, true));
     const glm::vec3 f = forwardOf(cc.camera());
     EXPECT_NEAR(std::abs(std::asin(f.y)), cc.maxPitch, 1e-3f) << "dy " << dy;
     // Still looking the same way horizontally: the view did not flip over the pole.
@@ -129,7 +134,8 @@ TEST(CameraController, ZoomNeverReachesOrPassesTheTarget) {
   cc.update(in);
   EXPECT_GT(distanceOf(cc.camera()), 0.0f);
   in.wheel = 5;
-  for (int i = 0; i < 2000; ++i) cc.update(in);
+  for (int i = 0; i < 2000; ++i)
+    cc.update(in);
   EXPECT_GE(distanceOf(cc.camera()), cc.minDistance * 0.999f);
   EXPECT_GT(glm::dot(forwardOf(cc.camera()), dir0), 0.999f) << "passed the target";
   cc.zoomStep = 5.0f; // out of its range: used as 0.9, never a negative factor
@@ -141,17 +147,20 @@ TEST(CameraController, ZoomingOutAndFlyingStayWithinTheKeysRange) {
   CameraController cc(testCamera());
   CameraInput in;
   in.wheel = -20;
-  for (int i = 0; i < 500; ++i) cc.update(in);
+  for (int i = 0; i < 500; ++i)
+    cc.update(in);
   const float far = distanceOf(cc.camera());
   EXPECT_GT(far, 1000.0f) << "zooming out stopped early";
   EXPECT_LE(glm::length(cc.camera().position), std::sqrt(3.0f) * cc.maxCoordinate);
-  EXPECT_LE(std::max({std::abs(cc.camera().position.x), std::abs(cc.camera().position.y), std::abs(cc.camera().position.z)}),
-            cc.maxCoordinate);
+  EXPECT_LE(
+      std::max({std::abs(cc.camera().position.x), std::abs(cc.camera().position.y), std::abs(cc.camera().position.z)}),
+      cc.maxCoordinate);
   in = CameraInput{};
   in.fly = {0, 0, -1};
   in.dt = 1000;
   in.fast = true;
-  for (int i = 0; i < 100; ++i) cc.update(in);
+  for (int i = 0; i < 100; ++i)
+    cc.update(in);
   for (int axis = 0; axis < 3; ++axis) {
     EXPECT_LE(std::abs(cc.camera().position[axis]), cc.maxCoordinate);
     EXPECT_LE(std::abs(cc.camera().target[axis]), cc.maxCoordinate);
@@ -190,9 +199,9 @@ TEST(CameraController, FrameShowsEveryCornerOfTheBox) {
     glm::vec3 lo, hi;
   };
   const Box boxes[] = {{{-1, -1, -1}, {1, 1, 1}},
-                       {{-20, 0, -0.5f}, {20, 0.2f, 0.5f}},   // long and flat
-                       {{3, 100, -2}, {3.01f, 140, -1.99f}},   // tall, thin, far from the origin
-                       {{5, 5, 5}, {5, 5, 5}}};                // a point
+                       {{-20, 0, -0.5f}, {20, 0.2f, 0.5f}},  // long and flat
+                       {{3, 100, -2}, {3.01f, 140, -1.99f}}, // tall, thin, far from the origin
+                       {{5, 5, 5}, {5, 5, 5}}};              // a point
   const glm::ivec2 viewports[] = {{800, 600}, {1920, 1080}, {300, 900}, {2000, 200}, {64, 64}};
   for (const Box& box : boxes) {
     for (const glm::ivec2& vp : viewports) {
@@ -206,7 +215,8 @@ TEST(CameraController, FrameShowsEveryCornerOfTheBox) {
         EXPECT_LT(glm::length(forwardOf(c) - forwardOf(start)), 1e-4f) << "view direction changed";
         float extent = 0;
         for (int i = 0; i < 8; ++i) {
-          const glm::vec3 p((i & 1) ? box.hi.x : box.lo.x, (i & 2) ? box.hi.y : box.lo.y, (i & 4) ? box.hi.z : box.lo.z);
+          const glm::vec3 p((i & 1) ? box.hi.x : box.lo.x, (i & 2) ? box.hi.y : box.lo.y,
+                            (i & 4) ? box.hi.z : box.lo.z);
           const glm::vec3 s = project(c, vp, p);
           SCOPED_TRACE(::testing::Message() << "box " << box.lo.x << ".." << box.hi.x << " viewport " << vp.x << "x"
                                             << vp.y << " fov " << fov << " corner " << i);

@@ -16,10 +16,10 @@
 #include <vector>
 
 using namespace rtlab;
+using nlohmann::json;
 using rtlab::test::catchError;
 using rtlab::test::Caught;
 using rtlab::test::checkCaught;
-using nlohmann::json;
 
 namespace {
 
@@ -54,7 +54,8 @@ TechniqueRegistry registry() {
 
 ParamSet params(const TechniqueRegistry& r) {
   ParamSet p;
-  for (const auto& e : r.entries()) p.declare(e.info.params);
+  for (const auto& e : r.entries())
+    p.declare(e.info.params);
   p.declare(ParamSpec::vector3("camera.position", "Position", {0, 1, 5}, -1e4, 1e4));
   p.declare(ParamSpec::vector3("camera.target", "Target", {0, 0, 0}, -1e4, 1e4));
   p.declare(ParamSpec::real("camera.fov", "Fov", 45, 1, 170));
@@ -167,11 +168,14 @@ TEST(ViewerScript, WrongJsonTypesAreInputErrors) {
       {R"({"action": "view", "false_color": 1})", "\"false_color\" must be a boolean"},
       {R"({"action": "compare", "divider": [0.5]})", "\"divider\" must be a number"},
       {R"({"action": "lecture", "on": "yes"})", "\"on\" must be a boolean"},
-      {R"({"action": "set", "key": "sh.samples", "value": {"x": 1}})", "\"value\" must be a number, boolean, string or array"},
-      {R"({"action": "set", "key": "sh.samples", "value": null})", "\"value\" must be a number, boolean, string or array"},
+      {R"({"action": "set", "key": "sh.samples", "value": {"x": 1}})",
+       "\"value\" must be a number, boolean, string or array"},
+      {R"({"action": "set", "key": "sh.samples", "value": null})",
+       "\"value\" must be a number, boolean, string or array"},
       {R"({"action": "screenshot", "file": ["a.png"]})", "\"file\" must be a string"},
   };
-  for (const auto& [action, message] : cases) checkCaught(parseSecond(action), ExitCode::Input, {"action 1", message});
+  for (const auto& [action, message] : cases)
+    checkCaught(parseSecond(action), ExitCode::Input, {"action 1", message});
 }
 
 TEST(ViewerScript, LongValuesAreCutInMessages) {
@@ -193,12 +197,14 @@ TEST(ViewerScript, ValuesOutOfRangeOrChoicesAreUsageErrors) {
       {R"({"action": "compare", "mode": "ab"})", "\"mode\" must be one of: reference, snapshot, difference, off"},
       {R"({"action": "view", "mode": "side"})", "\"mode\" must be one of: full, pip, off"},
       {R"({"action": "view", "min": 1, "max": 1})", "\"min\" (1) must be less than \"max\" (1)"},
-      {R"({"action": "camera", "position": [1, 1, 1], "target": [1, 1, 1]})", "\"target\" must differ from \"position\""},
+      {R"({"action": "camera", "position": [1, 1, 1], "target": [1, 1, 1]})",
+       "\"target\" must differ from \"position\""},
       {R"({"action": "screenshot", "file": "shot.jpg"})", "must be a .png file"},
       {R"({"action": "camera", "target": [1e300, 0, 0]})", "\"target\" component 1e+300 is out of range"},
       {R"({"action": "report", "file": ""})", "\"file\" must not be empty"},
   };
-  for (const auto& [action, message] : cases) checkCaught(parseSecond(action), ExitCode::Usage, {"action 1", message});
+  for (const auto& [action, message] : cases)
+    checkCaught(parseSecond(action), ExitCode::Usage, {"action 1", message});
 }
 
 TEST(ViewerScript, LoadScriptNamesTheFile) {
@@ -228,8 +234,9 @@ TEST(ViewerScript, ValidScriptValidates) {
 }
 
 TEST(ViewerScript, ValidationNamesTheActionForUnknownTechniquesAndStages) {
-  checkCaught(validate(R"([{"action": "wait", "frames": 1}, {"action": "technique", "stage": "shadow", "id": "pcss2"}])"),
-              ExitCode::Usage, {"script 'demo.json' action 1 (\"technique\")", "unknown technique 'pcss2'"});
+  checkCaught(
+      validate(R"([{"action": "wait", "frames": 1}, {"action": "technique", "stage": "shadow", "id": "pcss2"}])"),
+      ExitCode::Usage, {"script 'demo.json' action 1 (\"technique\")", "unknown technique 'pcss2'"});
   checkCaught(validate(R"([{"action": "technique", "stage": "shade", "id": "sh"}])"), ExitCode::Usage,
               {"action 0", "unknown stage 'shade'", "shadow"});
   checkCaught(validate(R"([{"action": "technique", "stage": "ao", "id": "sh"}])"), ExitCode::Usage,
@@ -245,7 +252,8 @@ TEST(ViewerScript, ValidationNamesTheActionForUnknownKeysAndBadValues) {
               {"action 0", "sh.samples"});
   checkCaught(validate(R"([{"action": "quit"}, {"action": "quit"}, {"action": "reset", "key": "nope.x"}])"),
               ExitCode::Usage, {"action 2 (\"reset\")", "unknown key 'nope.x'"});
-  checkCaught(validate(R"([{"action": "camera", "fov": 171}])"), ExitCode::Usage, {"action 0 (\"camera\")", "camera.fov"});
+  checkCaught(validate(R"([{"action": "camera", "fov": 171}])"), ExitCode::Usage,
+              {"action 0 (\"camera\")", "camera.fov"});
   checkCaught(validate(R"([{"action": "view", "aov": "sh.blocker"}])"), ExitCode::Usage,
               {"action 0 (\"view\")", "unknown AOV 'sh.blocker'"});
 }
@@ -263,8 +271,9 @@ TEST(ViewerScript, ValidationChecksPresetFilesAndOutputPaths) {
   checkCaught(validate(R"([{"action": "quit"}, {"action": "load_preset", "file": ")" + missing + "\"}]"),
               ExitCode::Input, {"action 1 (\"load_preset\")", "missing.json"});
   // A preset the script saves first is not read before it exists.
-  EXPECT_FALSE(validate(R"([{"action": "save_preset", "file": ")" + missing + R"("}, {"action": "load_preset", "file": ")" +
-                        missing + "\"}]").thrown);
+  EXPECT_FALSE(validate(R"([{"action": "save_preset", "file": ")" + missing +
+                        R"("}, {"action": "load_preset", "file": ")" + missing + "\"}]")
+                   .thrown);
   const std::string bad = (dir / "bad.json").string();
   { std::ofstream(bad) << R"({"schema": 1, "params": {"sh.samples": 1000}})"; }
   checkCaught(validate(R"([{"action": "load_preset", "file": ")" + bad + "\"}]"), ExitCode::Usage,
@@ -277,7 +286,8 @@ TEST(ViewerScript, ValidationChecksPresetFilesAndOutputPaths) {
 }
 
 TEST(ViewerScript, BookmarkIndicesAreCheckedAgainstTheBookmarks) {
-  const auto script = parseScript(R"([{"action": "bookmark", "index": 0}, {"action": "bookmark", "index": 2}])", "demo.json");
+  const auto script =
+      parseScript(R"([{"action": "bookmark", "index": 0}, {"action": "bookmark", "index": 2}])", "demo.json");
   validateScriptBookmarks(script, 3);
   checkCaught(catchError([&] { validateScriptBookmarks(script, 2); }), ExitCode::Usage,
               {"action 1 (\"bookmark\")", "bookmark 2 does not exist", "there are 2"});
@@ -291,7 +301,8 @@ TEST(ViewerScript, ActionsBuiltInCodeAreCheckedToo) {
   a.index = 4;
   a.source = "viewer";
   a.args = {{"key", "sh.samples"}}; // no "value"
-  checkCaught(catchError([&] { checkScriptAction(a); }), ExitCode::Input, {"script 'viewer' action 4 (\"set\")", "\"value\""});
+  checkCaught(catchError([&] { checkScriptAction(a); }), ExitCode::Input,
+              {"script 'viewer' action 4 (\"set\")", "\"value\""});
   const TechniqueRegistry r = registry();
   checkCaught(catchError([&] { validateScript({a}, params(r), r); }), ExitCode::Input, {"missing field \"value\""});
   a.args["value"] = 8;
