@@ -2,6 +2,7 @@
 // position and target together so the point under the cursor follows the mouse, the wheel
 // dollies without reaching the target, fly moves along the view axes, frame() puts every corner
 // of a box inside the view, reset() and degenerate input.
+#include "scene/builtin.h"
 #include "viewer/camera_controller.h"
 
 #include <gtest/gtest.h>
@@ -279,6 +280,31 @@ TEST(CameraController, SceneBoundsCoverTransformedInstances) {
   EXPECT_NEAR(hi.y, 2.0f, 1e-4f);
   EXPECT_NEAR(lo.z, -r, 1e-4f);
   EXPECT_NEAR(hi.z, r, 1e-4f);
+}
+
+TEST(CameraController, FramedBuiltinScenesAreWhollyInView) {
+  ASSERT_GE(builtinSceneNames().size(), 5u);
+  for (const auto& name : builtinSceneNames()) {
+    const Scene scene = makeBuiltinScene(name);
+    glm::vec3 lo, hi;
+    sceneBounds(scene, lo, hi);
+    const Bounds world = scene.worldBounds();
+    EXPECT_EQ(lo, world.min);
+    EXPECT_EQ(hi, world.max);
+    CameraController cc(scene.camera);
+    const glm::ivec2 vp{640, 360};
+    cc.setViewport(vp);
+    cc.frame(lo, hi);
+    for (const Instance& inst : scene.instances) {
+      const Bounds& b = scene.meshes[std::size_t(inst.mesh)].bounds;
+      for (int i = 0; i < 8; ++i) {
+        const glm::vec3 local((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
+        const glm::vec3 s = project(cc.camera(), vp, glm::vec3(inst.transform * glm::vec4(local, 1.0f)));
+        EXPECT_TRUE(s.x >= 0 && s.x <= vp.x && s.y >= 0 && s.y <= vp.y && s.z > -1 && s.z < 1)
+            << name << ": a corner of mesh " << inst.mesh << " projects to " << s.x << ", " << s.y << ", " << s.z;
+      }
+    }
+  }
 }
 
 TEST(CameraController, ResetReturnsHome) {
