@@ -70,7 +70,7 @@ glm::vec3 asVec3(const nlohmann::json& v, const char* field, const std::string& 
     if (!v[std::size_t(i)].is_number()) wrongType(field, "an array of 3 numbers", v, where);
     const double x = asNumber(v[std::size_t(i)], field, where);
     if (!(std::abs(x) <= double(std::numeric_limits<float>::max())))
-      usageError(where + ": " + quoted(field) + " component " + formatNumber(x) + " is out of range");
+      usageError(where + ": " + quoted(field) + " component " + shortestDecimal(x) + " is out of range");
     out[i] = float(x);
   }
   return out;
@@ -177,8 +177,8 @@ void requireChoice(const std::string& value, std::initializer_list<const char*> 
 
 void requireRange(double value, double lo, double hi, const char* field, const std::string& where) {
   if (value >= lo && value <= hi) return;
-  usageError(where + ": " + quoted(field) + " = " + formatNumber(value) + " is out of range [" + formatNumber(lo) +
-             ", " + formatNumber(hi) + "]");
+  usageError(where + ": " + quoted(field) + " = " + shortestDecimal(value) + " is out of range [" +
+             shortestDecimal(lo) + ", " + shortestDecimal(hi) + "]");
 }
 
 double jsonNumberFromFloat(float value) {
@@ -190,7 +190,7 @@ double jsonNumberFromFloat(float value) {
   return out;
 }
 
-std::string formatNumber(double value) {
+std::string shortestDecimal(double value) {
   char buf[64];
   auto [end, ec] = std::to_chars(buf, buf + sizeof(buf), value);
   return ec == std::errc() ? std::string(buf, end) : std::to_string(value);

@@ -54,7 +54,7 @@ void requireRange(double value, double lo, double hi, const char* field, const s
 // 0.10000000149011612, and still round-trips exactly.
 double jsonNumberFromFloat(float value);
 // The shortest decimal of a number, for messages: 1, 0.25, 1e+30.
-std::string formatNumber(double value);
+std::string shortestDecimal(double value);
 nlohmann::json jsonFromVec3(const glm::vec3& value);
 
 } // namespace rtlab

@@ -88,7 +88,7 @@ void checkWait(const json& a, const std::string& w) {
 void checkWaitSamples(const json& a, const std::string& w) {
   nonNegative(requireInteger(a, "samples", w), "samples", w);
   if (auto t = optionalNumber(a, "timeout_s", w); t && !(*t > 0))
-    usageError(w + ": \"timeout_s\" must be > 0, got " + formatNumber(*t));
+    usageError(w + ": \"timeout_s\" must be > 0, got " + shortestDecimal(*t));
 }
 void checkScreenshot(const json& a, const std::string& w) {
   const std::string file = requireFile(a, w);

@@ -14,7 +14,8 @@ void checkViewFields(const nlohmann::json& object, const std::string& where) {
   const auto hi = optionalNumber(object, "max", where);
   optionalBool(object, "false_color", where);
   if (lo && hi && !(*lo < *hi))
-    usageError(where + ": \"min\" (" + formatNumber(*lo) + ") must be less than \"max\" (" + formatNumber(*hi) + ")");
+    usageError(where + ": \"min\" (" + shortestDecimal(*lo) + ") must be less than \"max\" (" + shortestDecimal(*hi) +
+               ")");
 }
 
 void checkCompareFields(const nlohmann::json& object, const std::string& where) {
