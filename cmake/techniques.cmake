@@ -30,7 +30,3 @@ void registerAllTechniques(TechniqueRegistry& registry) {
 ${_calls}}
 }
 ")
-
-# Dear ImGui's GLFW + OpenGL3 backends ship as sources in the Debian package.
-set(RTLAB_IMGUI_BACKEND_DIR /usr/share/doc/libimgui-dev/examples/backends)
-set(RTLAB_IMGUI_BACKENDS "")

@@ -14,6 +14,8 @@ packages=(
 )
 # googletest is needed to configure the test targets, which are part of every build.
 packages+=(googletest libgtest-dev)
+# The viewer's lecture mode draws its text with a TrueType font at the scaled size (docs/viewer.md).
+packages+=(fonts-dejavu-core)
 # What only the tests use: Xvfb runs the window path under a virtual display; Chromium opens
 # the HTML reports headless.
 test_packages=(xvfb xauth chromium)

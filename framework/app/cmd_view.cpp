@@ -1,75 +1,67 @@
-// rtlab view: the frame in a window (GLFW). The lecture viewer's panels, toggles and A/B views
-// come with their own piece of work; this shows the frame, re-rendered every refresh, and can
-// take a screenshot after N frames for scripts and tests.
+// rtlab view: the lecture viewer (docs/viewer.md). Everything the command line names is checked
+// before the window opens — the frame options, the --script actions and the --bookmarks file —
+// so a bad input exits 2/3 with one line and never half-runs; the window itself needs a display
+// (exit 4 otherwise, suggesting xvfb-run or rtlab render).
 #include "app/commands.h"
 #include "app/frame_options.h"
 #include "frame/registry.h"
-#include "frame/renderer.h"
-#include "gl/debug.h"
-#include "shading/base_passes.h"
+#include "image/image.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
-#include "util/log.h"
+#include "viewer/window/viewer_app.h"
 
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
-
+#include <cstdlib>
 #include <iostream>
 
 namespace rtlab {
+namespace {
+
+bool hasDisplay() {
+  for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY"})
+    if (const char* v = std::getenv(name); v && *v) return true;
+  return false;
+}
+
+} // namespace
 
 int runView(int argc, char** argv) {
   auto specs = frameOptionSpecs();
-  specs.push_back({"--screenshot", "", true, "FILE", "after --frames N frames, save the window's image (PNG) and exit"});
+  specs.push_back({"--screenshot", "", true, "FILE", "after --frames N frames, save the window (UI included) as PNG and exit"});
+  specs.push_back({"--script", "", true, "FILE", "run a JSON list of actions (docs/viewer-scripts.md)"});
+  specs.push_back({"--bookmarks", "", true, "FILE", "lecture bookmarks, stepped with the arrow keys (docs/viewer-scripts.md)"});
   Args args("view", specs, argc, argv, 2);
   if (args.help()) {
-    std::cout << formatHelp("rtlab view [scene and frame options] [--frames N --screenshot FILE]",
-                            "Shows the frame in a window (needs a display). Esc or closing the window quits.\n"
-                            "--backend applies to headless commands only; a window always uses GLFW.", specs);
+    std::cout << formatHelp("rtlab view [scene and frame options] [--frames N --screenshot FILE] [--script FILE] "
+                            "[--bookmarks FILE]",
+                            "The lecture viewer (needs a display; docs/viewer.md). Esc or closing the window quits.\n"
+                            "--size is the window's initial size; --backend applies to headless commands only.",
+                            specs);
     return 0;
   }
-  ResolvedFrame frame = resolveFrame(args);
-  const std::string screenshot = args.get("--screenshot");
-  if (!screenshot.empty()) {
-    if (imageFormatFromPath(screenshot) != ImageFormat::Png) usageError("--screenshot must be a .png file");
-    checkOutputPath(screenshot);
-  }
-  saveRequestedPreset(frame);
-  auto context = createWindowContext(frame.options.width, frame.options.height, "rtlab — " + frame.scene.name);
+  ViewerOptions options;
+  options.frame = resolveFrame(args);
   const TechniqueRegistry& registry = TechniqueRegistry::instance();
-  Renderer renderer(registry);
-  renderer.setScene(frame.scene);
-  renderer.setTechniques(frame.techniques);
-  PassTimer timer(resolveTiming(frame.options.timing, context->info().software));
-  FrameOutputs outputs;
-  outputs.displayColor = true;
-  gl::Program& present = renderer.programs().get({{"common/fullscreen.vert", "shading/present.frag"}, {}, "present"});
-  GpuCommon common;
-  int rendered = 0;
-  while (!context->shouldClose()) {
-    context->pollEvents();
-    if (glfwGetKey(context->window(), GLFW_KEY_ESCAPE) == GLFW_PRESS) break;
-    int w = 0, h = 0;
-    context->framebufferSize(w, h);
-    if (w <= 0 || h <= 0) continue; // minimized
-    renderer.render(frame.params, w, h, outputs, timer);
-    drainGlErrors();
-    ++rendered;
-    if (!screenshot.empty() && rendered >= frame.options.frames) {
-      writeImage(screenshot, renderer.readDisplayColor(), PngEncoding::Srgb);
-      break;
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, w, h);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    present.use();
-    renderer.resource(res::kColorLdr)->bind(0);
-    present.set("uImage", 0);
-    common.drawFullscreen();
-    context->swapBuffers();
+  options.screenshot = args.get("--screenshot");
+  if (!options.screenshot.empty()) {
+    if (imageFormatFromPath(options.screenshot) != ImageFormat::Png) usageError("--screenshot must be a .png file");
+    checkOutputPath(options.screenshot);
   }
-  return 0;
+  options.bookmarksSource = args.get("--bookmarks");
+  if (!options.bookmarksSource.empty()) {
+    options.bookmarks = loadBookmarks(options.bookmarksSource);
+    validateBookmarks(options.bookmarks, options.frame.params, registry, options.bookmarksSource,
+                      options.frame.options.sceneSpec);
+  }
+  if (args.has("--script")) {
+    options.script = loadScript(args.get("--script"));
+    validateScript(*options.script, options.frame.params, registry);
+    validateScriptBookmarks(*options.script, options.bookmarks.size());
+  }
+  saveRequestedPreset(options.frame);
+  if (!hasDisplay())
+    throw Error(ExitCode::NoContext, "rtlab view needs a display (DISPLAY or WAYLAND_DISPLAY is unset): run it under "
+                                     "'xvfb-run -a rtlab view ...', or render headless with 'rtlab render'");
+  return runViewer(std::move(options));
 }
 
 } // namespace rtlab

@@ -70,7 +70,8 @@ private:
 std::unique_ptr<Context> createGlfwContext(int width, int height, const std::string& title) {
   glfwSetErrorCallback(onGlfwError);
   g_lastGlfwError.clear();
-  const std::string noDisplay = "no display for a window (DISPLAY/WAYLAND_DISPLAY unset or unusable): ";
+  const std::string noDisplay = "no display for a window (run under 'xvfb-run -a', or render headless with "
+                                "'rtlab render'); DISPLAY/WAYLAND_DISPLAY unset or unusable: ";
   if (!envSet("DISPLAY") && !envSet("WAYLAND_DISPLAY"))
     throw Error(ExitCode::NoContext, noDisplay + "neither is set");
   if (!glfwInit()) throw Error(ExitCode::NoContext, noDisplay + lastError());

@@ -1,0 +1,119 @@
+#include "ui/param_widgets.h"
+
+#include "params/param_set.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rtlab {
+namespace {
+
+std::string tooltipText(const ParamSpec& spec) {
+  std::string text = spec.help.empty() ? spec.label : spec.help;
+  text += "\nkey: " + spec.key + "\nrange: " + describeRange(spec);
+  if (!spec.unit.empty()) text += " " + spec.unit;
+  if (spec.scale == ParamScale::Log) text += " (log scale)";
+  if (spec.flags & kParamRecompile) text += "\nchanging it recompiles shaders";
+  if (spec.flags & kParamRealloc) text += "\nchanging it reallocates a resource";
+  return text;
+}
+
+std::string numberFormat(const ParamSpec& spec) {
+  std::string f = spec.type == ParamType::Int ? "%d" : "%.4g";
+  if (spec.unit.empty()) return f;
+  f += ' ';
+  for (char c : spec.unit) f += c == '%' ? std::string("%%") : std::string(1, c); // '%' is a directive
+  return f;
+}
+
+bool drawValue(const ParamSpec& spec, ParamValue& value, const char* id) {
+  const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (spec.scale == ParamScale::Log ? ImGuiSliderFlags_Logarithmic : 0);
+  switch (spec.type) {
+  case ParamType::Float: {
+    float v = float(value.v[0]);
+    const bool changed = ImGui::SliderFloat(id, &v, float(spec.min), float(spec.max), numberFormat(spec).c_str(), flags);
+    if (changed) value.v[0] = std::clamp(double(v), spec.min, spec.max);
+    return changed;
+  }
+  case ParamType::Int: {
+    int v = int(value.v[0]);
+    const bool changed = ImGui::SliderInt(id, &v, int(spec.min), int(spec.max), numberFormat(spec).c_str(), flags);
+    if (changed) value.v[0] = std::clamp(double(v), spec.min, spec.max);
+    return changed;
+  }
+  case ParamType::Bool: {
+    bool v = value.v[0] != 0.0;
+    const bool changed = ImGui::Checkbox(id, &v);
+    if (changed) value.v[0] = v ? 1.0 : 0.0;
+    return changed;
+  }
+  case ParamType::Enum: {
+    int v = int(value.v[0]);
+    bool changed = false;
+    if (ImGui::BeginCombo(id, spec.choices.at(std::size_t(v)).c_str())) {
+      for (int i = 0; i < int(spec.choices.size()); ++i)
+        if (ImGui::Selectable(spec.choices[std::size_t(i)].c_str(), i == v)) {
+          value.v[0] = i;
+          changed = true;
+        }
+      ImGui::EndCombo();
+    }
+    return changed;
+  }
+  case ParamType::Vec3:
+  case ParamType::Color: {
+    float v[3] = {float(value.v[0]), float(value.v[1]), float(value.v[2])};
+    const bool changed = spec.type == ParamType::Color && spec.max <= 1.0
+                             ? ImGui::ColorEdit3(id, v, ImGuiColorEditFlags_Float)
+                             : ImGui::DragFloat3(id, v, 0.01f, float(spec.min), float(spec.max), "%.3f", flags);
+    if (changed)
+      for (int c = 0; c < 3; ++c) value.v[std::size_t(c)] = std::clamp(double(v[c]), spec.min, spec.max);
+    return changed;
+  }
+  }
+  return false;
+}
+
+} // namespace
+
+void helpMarker(const std::string& text) {
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  if (ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+bool drawParamControl(const ParamSpec& spec, ParamValue& value) {
+  ImGui::PushID(spec.key.c_str());
+  ImGui::TextUnformatted(spec.label.c_str());
+  helpMarker(tooltipText(spec));
+  bool changed = false;
+  if (!(value == spec.def)) {
+    ImGui::SameLine();
+    if (ImGui::SmallButton("reset")) {
+      value = spec.def;
+      changed = true;
+    }
+  }
+  ImGui::SetNextItemWidth(-1.0f);
+  changed |= drawValue(spec, value, "##value");
+  ImGui::PopID();
+  return changed;
+}
+
+void drawParamGroup(const ParamSet& params, const std::string& prefix, std::vector<ParamEdit>& edits) {
+  for (const auto& spec : params.specs()) {
+    if (spec.key.rfind(prefix, 0) != 0) continue;
+    ParamValue value = params.value(spec.key);
+    if (drawParamControl(spec, value)) edits.push_back({spec.key, value});
+  }
+}
+
+} // namespace rtlab

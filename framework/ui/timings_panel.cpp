@@ -1,0 +1,34 @@
+// Timings section: the frame total and each pass's ms by the foundation's timing mechanism
+// (cpu-finish on software rasterizers, timer queries on a GPU; the method is shown), with a short
+// history graph of frame totals.
+#include "ui/panels.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace rtlab {
+
+void drawTimingsPanel(ViewerState& state) {
+  ImGui::Text("frame %.2f ms (%s)", state.frameMs, state.timingMethod.c_str());
+  if (!state.frameHistory.empty()) {
+    const std::vector<float> history(state.frameHistory.begin(), state.frameHistory.end());
+    const float top = *std::max_element(history.begin(), history.end());
+    ImGui::PlotLines("##history", history.data(), int(history.size()), 0, nullptr, 0.0f, top * 1.1f,
+                     ImVec2(-1.0f, ImGui::GetFontSize() * 3.0f));
+  }
+  if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_SizingStretchProp)) {
+    for (const auto& p : state.passes) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(p.technique.empty() ? p.pass.c_str() : (p.pass + " [" + p.technique + "]").c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%.2f", p.ms);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::Text("GL errors: %ld", state.glErrors);
+}
+
+} // namespace rtlab

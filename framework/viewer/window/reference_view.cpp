@@ -1,0 +1,73 @@
+#include "viewer/window/reference_view.h"
+
+#include "image/metrics.h"
+#include "scene/scene_params.h"
+#include "util/error.h"
+#include "viewer/window/frame_display.h"
+
+namespace rtlab {
+
+std::string referenceAovFor(const ViewerState& state) {
+  const std::string& v = state.view.aov;
+  if (state.view.mode != DebugMode::Off && (v == "visibility" || v == "ao" || v == "indirect")) return v;
+  for (const auto& [stage, aov] : {std::pair{"shadow", "visibility"}, {"ao", "ao"}, {"indirect", "indirect"}})
+    if (!state.selection.activeIn(stage).empty()) return aov;
+  return "visibility";
+}
+
+void ReferenceView::stop(ViewerState& state) {
+  if (!m_active) return;
+  m_reference.stop();
+  m_active = false;
+  m_inputsKey.clear();
+  m_metricsKey.clear();
+  state.reference.running = false;
+}
+
+void ReferenceView::update(ViewerState& state, Renderer& renderer, unsigned seed, int width, int height) {
+  const std::string aov = referenceAovFor(state);
+  // Everything the reference depends on; technique parameters are not in it (they change the
+  // frame, not the ground truth).
+  const std::string inputsKey = state.sceneSpec + "|" + aov + "|" + std::to_string(width) + "x" +
+                                std::to_string(height) + "|" +
+                                state.params.toJson({"light", "camera.", "ao.radius"}).dump();
+  auto& status = state.reference;
+  if (inputsKey != m_inputsKey) {
+    m_inputsKey = inputsKey;
+    m_metricsKey.clear();
+    m_snapshot = ProgressiveSnapshot{};
+    m_texture.reset();
+    status = {};
+    status.aov = aov;
+    try {
+      ProgressiveOptions options;
+      options.seed = seed;
+      options.aoRadius = state.params.getFloat("ao.radius");
+      Scene scene = state.scene;
+      applySceneParams(state.params, scene);
+      m_reference.start(scene, renderer.readSurfaces(), aov, options);
+      m_active = true;
+    } catch (const Error& e) {
+      status.error = e.what();
+      m_active = false;
+      return;
+    }
+  }
+  status.running = m_reference.running();
+  status.samples = m_reference.samples();
+  if (const std::string error = m_reference.error(); !error.empty()) status.error = error;
+  if (m_reference.latest(m_snapshot)) uploadImage(m_snapshot.image, m_texture, "viewer.reference");
+  if (m_snapshot.samples < kMetricsMinSpp) return;
+  // The metrics follow both the reference (new batches) and the frame (technique parameters).
+  std::string metricsKey = std::to_string(m_snapshot.generation) + "/" + std::to_string(m_snapshot.samples) + "/" +
+                          std::to_string(state.params.revision());
+  for (const auto& id : state.selection.ordered()) metricsKey += "/" + id;
+  if (metricsKey == m_metricsKey) return;
+  m_metricsKey = metricsKey;
+  const Metrics m = computeMetrics(renderer.readAov(aov), m_snapshot.image);
+  status.rmse = m.rmse;
+  status.flip = m.flip;
+  status.metricsSamples = m_snapshot.samples;
+}
+
+} // namespace rtlab

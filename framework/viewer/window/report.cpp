@@ -1,0 +1,54 @@
+#include "viewer/window/report.h"
+
+#include "util/atomic_file.h"
+#include "viewer/window/viewer_actions.h"
+
+namespace rtlab {
+namespace {
+
+nlohmann::ordered_json optionalNumberJson(const std::optional<double>& v) {
+  return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr);
+}
+
+} // namespace
+
+nlohmann::ordered_json viewerReport(const ViewerState& state, int renderWidth, int renderHeight) {
+  nlohmann::ordered_json j;
+  j["schema"] = 1;
+  j["frames"] = state.frames;
+  j["scene"] = state.sceneSpec;
+  j["techniques"] = state.selection.ordered();
+  j["render_size"] = {renderWidth, renderHeight};
+  j["render_scale"] = state.renderScale;
+  j["view"] = {{"aov", state.view.aov},
+               {"mode", debugModeName(state.view.mode)},
+               {"min", state.view.min},
+               {"max", state.view.max},
+               {"false_color", state.view.falseColor}};
+  j["compare"] = {{"mode", compareModeName(state.compare.mode)}, {"divider", state.compare.divider}};
+  const auto& r = state.reference;
+  j["reference"] = {{"aov", r.aov},
+                    {"samples", r.samples},
+                    {"running", r.running},
+                    {"rmse", optionalNumberJson(r.rmse)},
+                    {"flip", optionalNumberJson(r.flip)},
+                    {"metrics_samples", r.metricsSamples},
+                    {"error", r.error}};
+  j["timing"] = state.timingMethod;
+  j["frame_ms"] = state.frameMs;
+  auto passes = nlohmann::ordered_json::array();
+  for (const auto& p : state.passes) passes.push_back({{"name", p.pass}, {"technique", p.technique}, {"ms", p.ms}});
+  j["passes"] = passes;
+  j["gl_errors"] = state.glErrors;
+  j["shader_errors"] = state.shaderErrors;
+  j["lecture"] = state.lecture;
+  j["bookmark"] = state.bookmark;
+  j["params"] = state.params.toJson();
+  return j;
+}
+
+void writeViewerReport(const std::string& path, const ViewerState& state, int renderWidth, int renderHeight) {
+  writeTextAtomically(path, viewerReport(state, renderWidth, renderHeight).dump(2) + "\n");
+}
+
+} // namespace rtlab

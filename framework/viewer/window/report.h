@@ -1,0 +1,20 @@
+// The script action "report": the viewer's state as JSON, written atomically.
+// {"schema": 1, "frames", "scene", "techniques", "render_size": [w, h], "render_scale",
+//  "view": {"aov", "mode", "min", "max", "false_color"}, "compare": {"mode", "divider"},
+//  "reference": {"aov", "samples", "running", "rmse", "flip", "metrics_samples", "error"},
+//  "timing", "frame_ms", "passes": [{"name", "technique", "ms"}], "gl_errors",
+//  "shader_errors": ["file:line: ..."], "lecture", "bookmark", "params": {KEY: value}}
+// rmse and flip are null until the live metrics have been computed.
+#pragma once
+#include "viewer/window/viewer_state.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace rtlab {
+
+nlohmann::ordered_json viewerReport(const ViewerState& state, int renderWidth, int renderHeight);
+void writeViewerReport(const std::string& path, const ViewerState& state, int renderWidth, int renderHeight);
+
+} // namespace rtlab

@@ -1,0 +1,141 @@
+#include "viewer/window/viewer_app.h"
+
+#include "frame/registry.h"
+#include "gl/debug.h"
+#include "platform/context.h"
+#include "ui/fonts.h"
+#include "ui/panels.h"
+#include "util/error.h"
+#include "util/log.h"
+#include "viewer/window/hot_reload.h"
+#include "viewer/window/report.h"
+#include "viewer/window/screenshot.h"
+#include "viewer/window/script_runner.h"
+#include "viewer/window/viewer_actions.h"
+#include "viewer/window/viewer_frame.h"
+#include "viewer/window/viewer_input.h"
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <memory>
+
+namespace rtlab {
+namespace {
+
+std::vector<std::string> g_dropped; // files dropped onto the window since the last frame
+
+void onDrop(GLFWwindow*, int count, const char** paths) {
+  for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
+}
+
+// ImGui's context and backends for one window, shut down in reverse order.
+class ImGuiSession {
+public:
+  explicit ImGuiSession(GLFWwindow* window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr; // no imgui.ini beside the user's files
+    ImGui::StyleColorsDark();
+    fonts = loadViewerFonts();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 450 core");
+  }
+  ~ImGuiSession() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  ImGuiSession(const ImGuiSession&) = delete;
+  ImGuiSession& operator=(const ImGuiSession&) = delete;
+  ViewerFonts fonts;
+};
+
+void initState(ViewerState& state, ViewerOptions& options) {
+  ResolvedFrame& f = options.frame;
+  state.sceneSpec = f.options.sceneSpec;
+  state.scene = f.scene;
+  state.params = f.params;
+  for (const auto& id : f.techniques) state.selection.activate(id);
+  state.camera.setHome(state.scene.camera);
+  syncCameraFromParams(state); // --set camera.* wins over the scene's camera
+  state.camera.setHome(state.camera.camera());
+  state.bookmarks = std::move(options.bookmarks);
+  state.bookmarksSource = options.bookmarksSource;
+}
+
+} // namespace
+
+int runViewer(ViewerOptions options) {
+  const ResolvedFrame& f = options.frame;
+  auto context = createWindowContext(f.options.width, f.options.height, "rtlab view — " + f.scene.name);
+  GLFWwindow* window = context->window();
+  glfwSetDropCallback(window, onDrop); // before ImGui, which chains the callbacks it replaces
+  ImGuiSession imgui(window);
+  const TechniqueRegistry& registry = TechniqueRegistry::instance();
+
+  ViewerState state(registry);
+  initState(state, options);
+  ViewerFrame frame(registry, resolveTiming(f.options.timing, context->info().software));
+  ShaderWatcher watcher;
+  std::unique_ptr<ScriptRunner> script;
+  if (options.script)
+    script = std::make_unique<ScriptRunner>(std::move(*options.script), [&](const std::string& path) {
+      writeViewerReport(path, state, frame.renderWidth(), frame.renderHeight());
+    });
+  bool showPanel = true;
+  auto last = std::chrono::steady_clock::now();
+  while (!context->shouldClose() && !state.quit) {
+    context->pollEvents();
+    const auto now = std::chrono::steady_clock::now();
+    const float dt = std::chrono::duration<float>(now - last).count();
+    last = now;
+    int w = 0, h = 0;
+    context->framebufferSize(w, h);
+    if (w <= 0 || h <= 0) { // minimized
+      glfwWaitEventsTimeout(0.1);
+      continue;
+    }
+    watcher.poll(frame.programs(), state.shaderErrors);
+    for (const auto& path : g_dropped) runGuarded(state, [&] { loadSceneAction(state, path); });
+    g_dropped.clear();
+
+    useLectureFont(imgui.fonts, state.lecture);
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    if (handleViewerInput(window, state, dt, showPanel).quit) break;
+    if (script) script->step(state);
+
+    frame.render(state, w, h, script && script->wantsReference(), f.options.seed);
+    if (showPanel) drawViewerPanel(state);
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    state.glErrors += drainGlErrors();
+
+    for (const auto& path : state.pendingScreenshots) {
+      try {
+        writeScreenshot(path, w, h);
+        state.status = "screenshot " + path;
+      } catch (const Error& e) {
+        if (script) throw; // a script's output that cannot be written is an error (exit 6)
+        state.status = e.what();
+      }
+    }
+    state.pendingScreenshots.clear();
+    if (script) script->flushReports();
+    if (!options.screenshot.empty() && state.frames >= f.options.frames) {
+      writeScreenshot(options.screenshot, w, h);
+      break;
+    }
+    context->swapBuffers();
+  }
+  return 0;
+}
+
+} // namespace rtlab

@@ -1,0 +1,43 @@
+// One frame of the viewer: brings the renderer up to date with the state (scene, techniques),
+// renders at the window's size times the render scale, records timings and GL errors, keeps the
+// compare mode's reference and snapshot, and draws the picture (frame_display.h) into the window.
+#pragma once
+#include "frame/pass_timer.h"
+#include "frame/renderer.h"
+#include "viewer/window/frame_display.h"
+#include "viewer/window/reference_view.h"
+#include "viewer/window/viewer_state.h"
+
+namespace rtlab {
+
+class ViewerFrame {
+public:
+  static constexpr std::size_t kHistory = 120; // frames in the timings graph
+
+  ViewerFrame(const TechniqueRegistry& registry, TimingMethod timing);
+  // `referenceWanted`: keep the progressive reference running even when compare mode is off
+  // (a script waiting for samples).
+  void render(ViewerState& state, int windowWidth, int windowHeight, bool referenceWanted, unsigned seed);
+  int renderWidth() const { return m_width; }
+  int renderHeight() const { return m_height; }
+  gl::ProgramCache& programs() { return m_renderer.programs(); }
+
+private:
+  FrameOutputs outputsFor(ViewerState& state, bool reference, const std::string& referenceAov);
+  void recordTimings(ViewerState& state);
+  void takeSnapshot(ViewerState& state, const DisplaySide& side);
+  void draw(ViewerState& state, int windowWidth, int windowHeight, const std::string& referenceAov);
+  DisplaySide aovSide(const std::string& aov);
+
+  const TechniqueRegistry& m_registry;
+  Renderer m_renderer;
+  PassTimer m_timer;
+  FrameDisplay m_display;
+  ReferenceView m_reference;
+  gl::Texture m_snapshot;
+  DisplaySide m_snapshotSide;
+  bool m_rendered = false; // a frame has been rendered (the pool holds its textures)
+  int m_width = 0, m_height = 0;
+};
+
+} // namespace rtlab

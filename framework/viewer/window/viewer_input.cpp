@@ -1,0 +1,77 @@
+#include "viewer/window/viewer_input.h"
+
+#include "ui/panels.h"
+#include "viewer/window/viewer_actions.h"
+
+#include <imgui.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace rtlab {
+namespace {
+
+bool keyPressed(int key) { return ImGui::IsKeyPressed(key, false); }
+
+void stepBookmark(ViewerState& state, int delta) {
+  if (state.bookmarks.empty()) {
+    state.status = "no bookmarks (rtlab view --bookmarks FILE)";
+    return;
+  }
+  const int n = int(state.bookmarks.size());
+  const int next = state.bookmark < 0 ? (delta > 0 ? 0 : n - 1) : std::clamp(state.bookmark + delta, 0, n - 1);
+  runGuarded(state, [&] { bookmarkAction(state, next); });
+}
+
+} // namespace
+
+InputResult handleViewerInput(GLFWwindow* window, ViewerState& state, float dt, bool& showPanel) {
+  InputResult result;
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!io.WantCaptureKeyboard) {
+    if (keyPressed(GLFW_KEY_ESCAPE)) result.quit = true;
+    if (keyPressed(GLFW_KEY_F12)) state.pendingScreenshots.push_back(state.screenshotPathInput);
+    if (keyPressed(GLFW_KEY_TAB)) showPanel = !showPanel;
+    if (keyPressed(GLFW_KEY_L)) state.lecture = !state.lecture;
+    if (keyPressed(GLFW_KEY_RIGHT)) stepBookmark(state, +1);
+    if (keyPressed(GLFW_KEY_LEFT)) stepBookmark(state, -1);
+    if (keyPressed(GLFW_KEY_R)) {
+      state.camera.reset();
+      syncCameraToParams(state);
+    }
+    if (keyPressed(GLFW_KEY_F)) {
+      glm::vec3 lo, hi;
+      sceneBounds(state.scene, lo, hi);
+      state.camera.frame(lo, hi);
+      syncCameraToParams(state);
+    }
+  }
+  int w = 1, h = 1;
+  glfwGetWindowSize(window, &w, &h);
+  const bool ctrl = io.KeyCtrl;
+  if (!io.WantCaptureMouse && ctrl && io.MouseDown[0] && state.compare.mode != CompareMode::Off) {
+    state.compare.divider = std::clamp(io.MousePos.x / float(std::max(w, 1)), 0.0f, 1.0f);
+    return result;
+  }
+  CameraInput in;
+  in.dt = dt;
+  in.viewport = {std::max(w, 1), std::max(h, 1)};
+  if (!io.WantCaptureMouse) {
+    in.mouseDelta = {io.MouseDelta.x, io.MouseDelta.y};
+    in.orbit = io.MouseDown[0];
+    in.pan = io.MouseDown[1] || io.MouseDown[2];
+    in.wheel = io.MouseWheel;
+  }
+  if (!io.WantCaptureKeyboard && !ctrl) {
+    auto axis = [&](int plus, int minus) {
+      return float(glfwGetKey(window, plus) == GLFW_PRESS) - float(glfwGetKey(window, minus) == GLFW_PRESS);
+    };
+    in.fly = {axis(GLFW_KEY_D, GLFW_KEY_A), axis(GLFW_KEY_E, GLFW_KEY_Q), axis(GLFW_KEY_W, GLFW_KEY_S)};
+    in.fast = io.KeyShift;
+  }
+  if (in.mouseDelta.x != in.mouseDelta.x) in.mouseDelta = glm::vec2(0); // ImGui's "no previous position"
+  if (state.camera.update(in)) syncCameraToParams(state);
+  return result;
+}
+
+} // namespace rtlab
