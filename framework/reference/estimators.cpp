@@ -37,8 +37,8 @@ void addReflected(const EstimatorContext& ctx, const RayHit* hits, const glm::ve
     if (!(albedo[k].x > 0.0f || albedo[k].y > 0.0f || albedo[k].z > 0.0f)) hitMask &= ~(1u << k);
     else starts[k] = rayStart(hits[k].position, hits[k].geometricNormal, -incoming[k]);
   }
-  for (std::size_t i = 0; i < ctx.scene.lights.size() && hitMask != 0; ++i) {
-    const Light& light = ctx.scene.lights[i];
+  for (std::size_t i = 0; i < ctx.lights.size() && hitMask != 0; ++i) {
+    const Light& light = ctx.lights[i];
     EmbreeScene::Packet packet;
     glm::vec3 contribution[8];
     for (int k = 0; k < 8; ++k) {
@@ -66,8 +66,8 @@ void addReflected(const EstimatorContext& ctx, const RayHit* hits, const glm::ve
 
 float estimateVisibility(const EstimatorContext& ctx, const SurfacePoint& x, const PixelSampler& sampler,
                          std::uint64_t& rays) {
-  if (ctx.scene.lights.empty()) return 0.0f;
-  const Light& light = ctx.scene.lights.front();
+  if (ctx.lights.empty()) return 0.0f;
+  const Light& light = ctx.lights.front();
   const RayStart start = rayStart(x.position, x.geometricNormal, x.toViewer);
   const int n = lightHasExtent(light) ? sampler.spp() : 1;
   int visible = 0;

@@ -7,6 +7,7 @@
 #include "scene/scene.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace rtlab::reference {
 
@@ -18,9 +19,10 @@ struct SurfacePoint {
 };
 
 struct EstimatorContext {
-  const Scene& scene;
+  const Scene& scene; // materials and textures (those `tracer` was built from)
   const EmbreeScene& tracer;
   float aoRadius = 0.5f;
+  const std::vector<Light>& lights; // usually scene.lights; the progressive reference edits them apart
 };
 
 // Fraction of light 0 visible from the point: the mean of binary shadow rays toward uniform
@@ -32,8 +34,7 @@ float estimateVisibility(const EstimatorContext& ctx, const SurfacePoint& x, con
 // (1/pi) * integral of V_R(w) cos(theta) dw over the hemisphere of the shading normal, with
 // V_R = 1 when no surface lies within aoRadius: the mean of V_R over cosine-weighted directions.
 // Directions below the geometric tangent plane count as occluded.
-float estimateAo(const EstimatorContext& ctx, const SurfacePoint& x, const PixelSampler& sampler,
-                 std::uint64_t& rays);
+float estimateAo(const EstimatorContext& ctx, const SurfacePoint& x, const PixelSampler& sampler, std::uint64_t& rays);
 
 // E(x) = integral of L(w) cos(theta) dw with L the radiance that the first surface hit along w
 // reflects diffusely: (albedo / pi) * its direct irradiance from every light (the GPU's light

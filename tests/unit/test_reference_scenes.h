@@ -6,7 +6,10 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <functional>
+#include <numbers>
+#include <vector>
 
 namespace rtlab::test {
 
@@ -89,6 +92,38 @@ inline SurfaceData gridSurfaces(int width, int height, const glm::vec3& normal,
     }
   }
   return s;
+}
+
+// docs/measuring.md, "AO beside a wall": a floor point at distance d from a wall that meets the
+// floor at 90 degrees; with a = d / R < 1 the occluded part of the cosine-weighted hemisphere is a
+// circular segment of the projected unit disk: ao = 1 - (acos(a) - a sqrt(1 - a^2)) / pi.
+inline double aoBesideWall(double d, double radius) {
+  const double a = d / radius;
+  if (a >= 1.0) return 1.0;
+  return 1.0 - (std::acos(a) - a * std::sqrt(1.0 - a * a)) / std::numbers::pi;
+}
+
+// Floor y = 0 for x > 0 and a wall x = 0 facing +x, both 100 wide; points at x = d in (0, 1.25 R).
+struct WallCase {
+  Scene scene;
+  SurfaceData points;
+  std::vector<double> expected; // per pixel
+  float radius = 1.0f;
+};
+
+inline WallCase wallCase(int columns, int rows, float maxD) {
+  WallCase c;
+  c.scene.name = "wall";
+  addQuad(c.scene, {50, 0, 0}, {50, 0, 0}, {0, 0, -50}); // floor, facing +y
+  addQuad(c.scene, {0, 50, 0}, {0, 0, -50}, {0, 50, 0}); // wall, facing +x
+  c.scene.camera.position = {6, 4, 0.5f};
+  c.points = gridSurfaces(columns, rows, {0, 1, 0}, [&](int x, int y) {
+    return glm::vec3(maxD * (x + 0.5f) / columns, 0.0f, -1.0f + 2.0f * (y + 0.5f) / rows);
+  });
+  for (int y = 0; y < rows; ++y)
+    for (int x = 0; x < columns; ++x)
+      c.expected.push_back(aoBesideWall(maxD * (x + 0.5) / columns, c.radius));
+  return c;
 }
 
 } // namespace rtlab::test
