@@ -67,7 +67,7 @@ void drawComparePanel(ViewerState& state) {
   if (!r.aov.empty()) {
     ImGui::Text("reference: %s, %d spp%s", r.aov.c_str(), r.samples, r.running ? " (refining)" : "");
     if (r.rmse) ImGui::Text("RMSE %.4f  FLIP %.4f  at %d spp", *r.rmse, r.flip.value_or(0.0), r.metricsSamples);
-    else ImGui::TextDisabled("metrics once the reference has converged enough");
+    else ImGui::TextDisabled("%s", r.waiting.empty() ? "metrics once the reference has converged enough" : r.waiting.c_str());
   }
   if (!r.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", r.error.c_str());
 }

@@ -1,6 +1,6 @@
 #include "viewer/window/reference_view.h"
 
-#include "image/metrics.h"
+#include "reference/live_metrics.h"
 #include "scene/scene_params.h"
 #include "util/error.h"
 #include "viewer/window/frame_display.h"
@@ -45,7 +45,11 @@ void ReferenceView::update(ViewerState& state, Renderer& renderer, unsigned seed
       options.aoRadius = state.params.getFloat("ao.radius");
       Scene scene = state.scene;
       applySceneParams(state.params, scene);
-      m_reference.start(scene, renderer.readSurfaces(), aov, options);
+      auto prepared = m_reference.preparedScene();
+      if (prepared && m_sceneGeneration == state.sceneGeneration)
+        m_reference.start(prepared, scene, renderer.readSurfaces(), aov, options);
+      else m_reference.start(scene, renderer.readSurfaces(), aov, options);
+      m_sceneGeneration = state.sceneGeneration;
       m_active = true;
     } catch (const Error& e) {
       status.error = e.what();
@@ -57,17 +61,23 @@ void ReferenceView::update(ViewerState& state, Renderer& renderer, unsigned seed
   status.samples = m_reference.samples();
   if (const std::string error = m_reference.error(); !error.empty()) status.error = error;
   if (m_reference.latest(m_snapshot)) uploadImage(m_snapshot.image, m_texture, "viewer.reference");
-  if (m_snapshot.samples < kMetricsMinSpp) return;
-  // The metrics follow both the reference (new batches) and the frame (technique parameters).
-  std::string metricsKey = std::to_string(m_snapshot.generation) + "/" + std::to_string(m_snapshot.samples) + "/" +
-                          std::to_string(state.params.revision());
+  if (m_snapshot.generation != m_reference.generation()) return; // nothing of this view yet
+  // The metrics follow both the reference and the frame (technique parameters). FLIP costs a
+  // frame or more on a loaded CPU, so they are measured again each time the reference's sample
+  // count reaches the next power of two (16, 32, 64, ...), not after every batch.
+  int bucket = 0;
+  while ((2 << bucket) <= m_snapshot.samples) ++bucket;
+  std::string metricsKey = std::to_string(m_snapshot.generation) + "/" + std::to_string(bucket) + "/" +
+                           std::to_string(state.params.revision());
   for (const auto& id : state.selection.ordered()) metricsKey += "/" + id;
   if (metricsKey == m_metricsKey) return;
   m_metricsKey = metricsKey;
-  const Metrics m = computeMetrics(renderer.readAov(aov), m_snapshot.image);
-  status.rmse = m.rmse;
-  status.flip = m.flip;
-  status.metricsSamples = m_snapshot.samples;
+  const LiveMetrics live = computeLiveMetrics(renderer.readAov(aov), m_snapshot);
+  status.waiting = live.reason;
+  if (!live.ready) return;
+  status.rmse = live.metrics.rmse;
+  status.flip = live.metrics.flip;
+  status.metricsSamples = live.referenceSamples;
 }
 
 } // namespace rtlab

@@ -3,7 +3,8 @@
 // still and restarted whenever something it depends on changes (scene, lights, camera,
 // ao.radius, render size, AOV); the UI never waits for it. Each new batch is uploaded for the
 // wipe and the difference view, and the live metrics of the visible frame's AOV against it are
-// computed as `rtlab compare` computes them (computeMetrics over valid pixels).
+// computed as `rtlab compare` computes them (reference/live_metrics.h: from 16 spp on). A restart
+// after a camera or light change reuses the reference's BVH; a new scene builds it again.
 #pragma once
 #include "frame/renderer.h"
 #include "gl/texture.h"
@@ -20,9 +21,6 @@ std::string referenceAovFor(const ViewerState& state);
 
 class ReferenceView {
 public:
-  // Live metrics start once the reference has this many samples per pixel.
-  static constexpr int kMetricsMinSpp = 4;
-
   // After a frame rendered with FrameOutputs{aovs: {aov}, surfaces: true}: restarts the
   // reference if its inputs changed, takes the latest batch, and updates state.reference.
   void update(ViewerState& state, Renderer& renderer, unsigned seed, int width, int height);
@@ -37,6 +35,7 @@ private:
   ProgressiveSnapshot m_snapshot;
   gl::Texture m_texture;
   std::string m_inputsKey;   // what the running reference was started from
+  unsigned long m_sceneGeneration = ~0ul; // the scene the reference's BVH was built for
   std::string m_metricsKey;  // what the metrics were computed from
   bool m_active = false;
 };

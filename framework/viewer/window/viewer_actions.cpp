@@ -66,6 +66,7 @@ void loadSceneAction(ViewerState& state, const std::string& spec) {
   state.camera.setHome(state.scene.camera);
   applyScene(state);
   state.sceneChanged = true;
+  ++state.sceneGeneration;
 }
 
 void selectTechniqueAction(ViewerState& state, const std::string& stage, const std::string& id) {

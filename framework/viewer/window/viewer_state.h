@@ -46,6 +46,7 @@ struct ViewerState {
   TechniqueSelection selection;
   CameraController camera;
   bool sceneChanged = true;      // the renderer must upload the scene again
+  unsigned long sceneGeneration = 0; // counts scene loads (the reference's BVH follows it)
   bool techniquesChanged = true; // the renderer must instantiate/destroy techniques
 
   DebugViewSettings view;
@@ -74,6 +75,7 @@ struct ViewerState {
     bool running = false;
     std::optional<double> rmse, flip;
     int metricsSamples = 0; // the reference's spp when the metrics were computed
+    std::string waiting;    // why there are no metrics yet ("reference: 8 / 16 spp")
     std::string error;
   } reference;
   bool snapshotRequested = false; // freeze the current picture as compare side B
