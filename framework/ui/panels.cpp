@@ -1,7 +1,7 @@
 #include "ui/panels.h"
 
 #include "util/error.h"
-#include "viewer/window/viewer_actions.h"
+#include "viewer/viewer_actions.h"
 
 #include <imgui.h>
 

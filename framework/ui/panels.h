@@ -1,9 +1,9 @@
 // The viewer's side panel (Dear ImGui), drawn from the declarations: the stage table, the
 // technique registry and each ParamSpec. Panels change the state only through the viewer's
-// actions (viewer/window/viewer_actions.h); a rejected edit shows its message in the status line.
+// actions (viewer/viewer_actions.h); a rejected edit shows its message in the status line.
 #pragma once
 #include "ui/param_widgets.h"
-#include "viewer/window/viewer_state.h"
+#include "viewer/viewer_state.h"
 
 #include <functional>
 #include <vector>

@@ -3,7 +3,7 @@
 #include "ui/panels.h"
 
 #include "scene/builtin.h"
-#include "viewer/window/viewer_actions.h"
+#include "viewer/viewer_actions.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>

@@ -6,7 +6,7 @@
 
 #include "frame/registry.h"
 #include "frame/stages.h"
-#include "viewer/window/viewer_actions.h"
+#include "viewer/viewer_actions.h"
 
 #include <imgui.h>
 
@@ -14,7 +14,7 @@ namespace rtlab {
 namespace {
 
 void drawExclusiveSelector(ViewerState& state, const StageInfo& stage) {
-  const TechniqueRegistry& registry = TechniqueRegistry::instance();
+  const TechniqueRegistry& registry = *state.registry;
   const std::string active = state.selection.activeIn(stage.id);
   if (ImGui::BeginCombo(stage.id.c_str(), active.empty() ? "off" : active.c_str())) {
     if (ImGui::Selectable("off", active.empty())) runGuarded(state, [&] { selectTechniqueAction(state, stage.id, "off"); });
@@ -29,7 +29,7 @@ void drawExclusiveSelector(ViewerState& state, const StageInfo& stage) {
 }
 
 void drawStackSelector(ViewerState& state, const StageInfo& stage) {
-  for (const auto& e : TechniqueRegistry::instance().entries()) {
+  for (const auto& e : state.registry->entries()) {
     if (e.info.stage != stage.id) continue;
     bool on = state.selection.isActive(e.info.id);
     if (ImGui::Checkbox(e.info.id.c_str(), &on)) {
@@ -43,7 +43,7 @@ void drawStackSelector(ViewerState& state, const StageInfo& stage) {
 } // namespace
 
 void drawTechniquePanel(ViewerState& state) {
-  const TechniqueRegistry& registry = TechniqueRegistry::instance();
+  const TechniqueRegistry& registry = *state.registry;
   std::vector<ParamEdit> edits;
   for (const auto& stage : stages()) {
     bool any = false;

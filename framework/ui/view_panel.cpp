@@ -6,7 +6,7 @@
 #include "frame/registry.h"
 #include "frame/stages.h"
 #include "viewer/script.h"
-#include "viewer/window/viewer_actions.h"
+#include "viewer/viewer_actions.h"
 
 #include <imgui.h>
 
@@ -17,7 +17,7 @@ std::vector<std::string> viewableAovs(const ViewerState& state) {
   std::vector<std::string> names;
   for (const auto& a : builtinAovs()) names.push_back(a.name);
   for (const auto& id : state.selection.ordered())
-    for (const auto& v : TechniqueRegistry::instance().get(id).info.debugViews) names.push_back(v.name);
+    for (const auto& v : state.registry->get(id).info.debugViews) names.push_back(v.name);
   return names;
 }
 

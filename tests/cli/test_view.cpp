@@ -12,7 +12,7 @@ using namespace rtlab::test;
 
 TEST(View, ScreenshotAfterFiveFramesShowsThePanelOverTheFrame) {
   ASSERT_TRUE(fs::exists(kXvfbRun)) << "install xvfb (scripts/setup.sh --test-deps)";
-  const fs::path dir = freshDir("view");
+  const fs::path dir = freshTestDir("view");
   const std::string shot = (dir / "window.png").string(), headless = (dir / "headless.png").string();
   std::vector<std::string> frame = {"--scene", "contact", "-t", "shadow_map"};
   frame.insert(frame.end(), kViewSize.begin(), kViewSize.end());
@@ -48,7 +48,7 @@ TEST(View, WithoutDisplayExits4SuggestingXvfbRun) {
 
 TEST(View, QuitActionExitsZeroWithoutGlErrors) {
   ASSERT_TRUE(fs::exists(kXvfbRun)) << "install xvfb (scripts/setup.sh --test-deps)";
-  const fs::path dir = freshDir("view_quit");
+  const fs::path dir = freshTestDir("view");
   const std::string script = writeScript(dir / "quit.json", nlohmann::json::parse(R"([
     {"action": "wait", "frames": 3},
     {"action": "report", "file": ")" + (dir / "report.json").string() + R"("},

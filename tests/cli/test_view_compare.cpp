@@ -12,7 +12,7 @@ using namespace rtlab::test;
 
 TEST(ViewCompare, WipeShowsBothHalvesAndLiveRmseMatchesRtlabCompare) {
   ASSERT_TRUE(fs::exists(kXvfbRun)) << "install xvfb (scripts/setup.sh --test-deps)";
-  const fs::path dir = freshDir("view_compare");
+  const fs::path dir = freshTestDir("view");
   auto file = [&](const char* name) { return (dir / name).string(); };
   // A hard shadow map against a light of radius 0.5: the reference's penumbrae differ from it.
   std::vector<std::string> frame = {"--scene", "contact", "-t", "shadow_map", "--set", "light0.radius=0.5"};

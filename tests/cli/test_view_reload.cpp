@@ -28,7 +28,7 @@ bool waitFor(const fs::path& path, double seconds) {
 
 TEST(ViewReload, BrokenShaderKeepsRenderingAndReportsFileLineThenRecovers) {
   ASSERT_TRUE(fs::exists(kXvfbRun)) << "install xvfb (scripts/setup.sh --test-deps)";
-  const fs::path dir = freshDir("view_reload");
+  const fs::path dir = freshTestDir("view");
   const fs::path data = dir / "data";
   fs::create_directories(data);
   fs::copy(fs::path(RTLAB_SOURCE_DIR) / "shaders", data / "shaders", fs::copy_options::recursive);

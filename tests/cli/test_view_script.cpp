@@ -13,7 +13,7 @@ using namespace rtlab::test;
 
 TEST(ViewScript, TechniqueOffParameterPresetDebugViewSnapshotAndBookmark) {
   ASSERT_TRUE(fs::exists(kXvfbRun)) << "install xvfb (scripts/setup.sh --test-deps)";
-  const fs::path dir = freshDir("view_script");
+  const fs::path dir = freshTestDir("view");
   auto file = [&](const char* name) { return (dir / name).string(); };
   std::ofstream(dir / "bookmarks.json") << R"({"schema": 1, "bookmarks": [
     {"name": "Hard shadow, small map", "techniques": ["shadow_map"], "params": {"shadow.resolution": 512}}]})";

@@ -2,6 +2,7 @@
 // by scripts/setup.sh --test-deps), write scripts, read reports, and compare image regions.
 #pragma once
 #include "process.h"
+#include "test_util.h"
 
 #include "image/image.h"
 
@@ -19,14 +20,6 @@ namespace rtlab::test {
 inline constexpr const char* kXvfbRun = "/usr/bin/xvfb-run";
 // The window of every viewer test: small, so llvmpipe draws a frame in milliseconds.
 inline const std::vector<std::string> kViewSize = {"--size", "320x180"};
-
-// A fresh directory under the test tree's temporary folder.
-inline std::filesystem::path freshDir(const std::string& name) {
-  const auto dir = std::filesystem::path(RTLAB_TEST_TMP) / name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 // `xvfb-run -a [env NAME=VALUE...] rtlab view ARGS...`
 inline ProcessResult runView(const std::vector<std::string>& args, const std::vector<std::string>& env = {},

@@ -9,7 +9,7 @@
 #include "frame/renderer.h"
 #include "gl/texture.h"
 #include "reference/progressive_reference.h"
-#include "viewer/window/viewer_state.h"
+#include "viewer/viewer_state.h"
 
 #include <string>
 

@@ -1,7 +1,7 @@
 #include "viewer/window/report.h"
 
 #include "util/atomic_file.h"
-#include "viewer/window/viewer_actions.h"
+#include "viewer/viewer_actions.h"
 
 namespace rtlab {
 namespace {

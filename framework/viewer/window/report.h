@@ -6,7 +6,7 @@
 //  "shader_errors": ["file:line: ..."], "lecture", "bookmark", "params": {KEY: value}}
 // rmse and flip are null until the live metrics have been computed.
 #pragma once
-#include "viewer/window/viewer_state.h"
+#include "viewer/viewer_state.h"
 
 #include <nlohmann/json.hpp>
 

@@ -2,7 +2,7 @@
 
 #include "util/log.h"
 #include "viewer/json_fields.h"
-#include "viewer/window/viewer_actions.h"
+#include "viewer/viewer_actions.h"
 
 namespace rtlab {
 

@@ -4,7 +4,7 @@
 // snapshot, report) are queued on the state and happen after the frame they follow.
 #pragma once
 #include "viewer/script.h"
-#include "viewer/window/viewer_state.h"
+#include "viewer/viewer_state.h"
 
 #include <chrono>
 #include <functional>

@@ -11,7 +11,7 @@
 #include "viewer/window/report.h"
 #include "viewer/window/screenshot.h"
 #include "viewer/window/script_runner.h"
-#include "viewer/window/viewer_actions.h"
+#include "viewer/viewer_actions.h"
 #include "viewer/window/viewer_frame.h"
 #include "viewer/window/viewer_input.h"
 

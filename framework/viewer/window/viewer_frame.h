@@ -6,7 +6,7 @@
 #include "frame/renderer.h"
 #include "viewer/window/frame_display.h"
 #include "viewer/window/reference_view.h"
-#include "viewer/window/viewer_state.h"
+#include "viewer/viewer_state.h"
 
 namespace rtlab {
 

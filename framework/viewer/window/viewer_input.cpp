@@ -1,7 +1,7 @@
 #include "viewer/window/viewer_input.h"
 
 #include "ui/panels.h"
-#include "viewer/window/viewer_actions.h"
+#include "viewer/viewer_actions.h"
 
 #include <imgui.h>
 

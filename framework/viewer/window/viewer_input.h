@@ -2,7 +2,7 @@
 // Esc quit, F12 screenshot, Tab panel on/off, L lecture mode, Left/Right bookmarks, Ctrl+drag
 // the compare divider. Input ImGui wants (a slider being dragged, a text field) is left to it.
 #pragma once
-#include "viewer/window/viewer_state.h"
+#include "viewer/viewer_state.h"
 
 struct GLFWwindow;
 

@@ -3,7 +3,7 @@
 // the command line does (Error(Usage) naming the key and range, Error(Input) for a bad file);
 // the UI shows the message in its status line, a script run stops with the message's exit code.
 #pragma once
-#include "viewer/window/viewer_state.h"
+#include "viewer/viewer_state.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,4 +1,4 @@
-#include "viewer/window/viewer_actions.h"
+#include "viewer/viewer_actions.h"
 
 #include "frame/param_catalog.h"
 #include "frame/registry.h"
@@ -57,7 +57,7 @@ CompareMode parseCompareMode(const std::string& name) {
 
 void loadSceneAction(ViewerState& state, const std::string& spec) {
   Scene scene = loadScene(spec); // Error(Usage) or Error(Input): the state is untouched
-  ParamSet params = makeParamSet(scene, TechniqueRegistry::instance());
+  ParamSet params = makeParamSet(scene, *state.registry);
   for (const auto& s : state.params.specs())
     if (!isSceneKey(s.key) && params.has(s.key)) params.set(s.key, state.params.value(s.key));
   state.scene = std::move(scene);
@@ -73,9 +73,9 @@ void selectTechniqueAction(ViewerState& state, const std::string& stage, const s
   if (!findStage(stage)) usageError("unknown stage '" + stage + "'");
   if (id == "off") {
     for (const auto& active : state.selection.ordered())
-      if (TechniqueRegistry::instance().get(active).info.stage == stage) state.selection.deactivate(active);
+      if (state.registry->get(active).info.stage == stage) state.selection.deactivate(active);
   } else {
-    const auto& entry = TechniqueRegistry::instance().get(id);
+    const auto& entry = state.registry->get(id);
     if (entry.info.stage != stage)
       usageError("technique '" + id + "' belongs to stage '" + entry.info.stage + "', not '" + stage + "'");
     state.selection.activate(id);
@@ -116,7 +116,7 @@ void viewAction(ViewerState& state, const nlohmann::json& fields) {
   checkViewFields(fields, where);
   DebugViewSettings v = state.view;
   if (auto aov = optionalString(fields, "aov", where)) {
-    checkViewAov(*aov, TechniqueRegistry::instance());
+    checkViewAov(*aov, *state.registry);
     v.aov = *aov;
   }
   if (auto mode = optionalString(fields, "mode", where)) v.mode = parseDebugMode(*mode);
@@ -167,7 +167,7 @@ void bookmarkAction(ViewerState& state, int index) {
   const Bookmark& b = state.bookmarks[std::size_t(index)];
   if (b.scene && *b.scene != state.sceneSpec) loadSceneAction(state, *b.scene);
   if (b.techniques) {
-    TechniqueSelection selection(TechniqueRegistry::instance());
+    TechniqueSelection selection(*state.registry);
     for (const auto& id : *b.techniques) selection.activate(id);
     state.selection = selection;
     state.techniquesChanged = true;

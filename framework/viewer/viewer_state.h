@@ -38,8 +38,9 @@ struct PassTiming {
 };
 
 struct ViewerState {
-  ViewerState(const TechniqueRegistry& registry) : selection(registry) {}
+  explicit ViewerState(const TechniqueRegistry& techniques) : registry(&techniques), selection(techniques) {}
 
+  const TechniqueRegistry* registry; // the techniques the panels and actions offer
   std::string sceneSpec; // --scene value of the loaded scene
   Scene scene;
   ParamSet params;
