@@ -40,4 +40,37 @@ void drawViewerPanel(ViewerState& state) {
   ImGui::End();
 }
 
+void drawInfoOverlay(const ViewerState& state, int renderWidth, int renderHeight) {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + viewport->Size.x - 8.0f, viewport->Pos.y + 8.0f), ImGuiCond_Always,
+                          ImVec2(1.0f, 0.0f));
+  ImGui::SetNextWindowBgAlpha(0.6f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                 ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoSavedSettings;
+  if (ImGui::Begin("##info", nullptr, flags)) {
+    ImGui::Text("%.1f ms (%s)  %dx%d", state.frameMs, state.timingMethod.c_str(), renderWidth, renderHeight);
+    const auto& r = state.reference;
+    if (state.compare.mode == CompareMode::Reference || state.compare.mode == CompareMode::Difference) {
+      if (r.rmse) ImGui::Text("%s vs reference: RMSE %.4f  FLIP %.4f  (%d spp)", r.aov.c_str(), *r.rmse,
+                              r.flip.value_or(0.0), r.metricsSamples);
+      else ImGui::Text("reference: %d spp", r.samples);
+    }
+  }
+  ImGui::End();
+}
+
+void drawLectureCaption(const ViewerState& state) {
+  if (!state.lecture || state.bookmark < 0) return;
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + viewport->Size.x - 8.0f, viewport->Pos.y + viewport->Size.y - 8.0f),
+                          ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+  ImGui::SetNextWindowBgAlpha(0.6f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                 ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoSavedSettings;
+  if (ImGui::Begin("##lecture", nullptr, flags))
+    ImGui::Text("%d/%zu  %s", state.bookmark + 1, state.bookmarks.size(),
+                state.bookmarks[std::size_t(state.bookmark)].name.c_str());
+  ImGui::End();
+}
+
 } // namespace rtlab

@@ -13,6 +13,12 @@ namespace rtlab {
 // The whole panel: a window docked to the left edge with collapsing sections.
 void drawViewerPanel(ViewerState& state);
 
+// The top-right corner: frame time (and its method), render size, and in compare mode the
+// reference's sample count with the live RMSE and FLIP.
+void drawInfoOverlay(const ViewerState& state, int renderWidth, int renderHeight);
+// Lecture mode's caption: the current bookmark's name in large text at the bottom of the window.
+void drawLectureCaption(const ViewerState& state);
+
 // Sections (each in its own file).
 void drawScenePanel(ViewerState& state);      // scene picker, presets, bookmarks    (scene_panel.cpp)
 void drawLightPanel(ViewerState& state);      // light<N>.* keys                     (scene_panel.cpp)

@@ -47,6 +47,9 @@ void drawViewPanel(ViewerState& state) {
     v.max = range[1];
   }
   helpMarker("Values from min to max map to black..white, or through the false-color ramp (one-channel data).");
+  if (ImGui::Button("auto range")) v.autoRangeRequested = true;
+  helpMarker("Sets the range to the smallest and largest value of the shown AOV (surface pixels).");
+  ImGui::SameLine();
   ImGui::Checkbox("false color", &v.falseColor);
   float scale = state.renderScale;
   if (ImGui::SliderFloat("render scale", &scale, float(kRenderScaleMin), float(kRenderScaleMax), "%.2f"))

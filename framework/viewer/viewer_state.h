@@ -24,6 +24,7 @@ struct DebugViewSettings {
   DebugMode mode = DebugMode::Off;
   float min = 0.0f, max = 1.0f; // value range mapped to black..white (or the false-color scale)
   bool falseColor = false;      // scalar data through a color map
+  bool autoRangeRequested = false; // set min/max from the next frame's values (valid pixels)
 };
 
 struct CompareSettings {

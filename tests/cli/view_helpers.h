@@ -45,15 +45,17 @@ inline nlohmann::json readJson(const std::filesystem::path& path) {
   return nlohmann::json::parse(in);
 }
 
-// Mean absolute difference per channel value over the columns [x0, x1) (fractions of the width).
-inline double regionDiff(const Image& a, const Image& b, double x0, double x1) {
+// Mean absolute difference per channel value over the columns [x0, x1) and rows [y0, y1)
+// (fractions of the width and height; rows from the top). The default rows leave out the top
+// quarter, where the info overlay (frame time, live metrics) sits on the right.
+inline double regionDiff(const Image& a, const Image& b, double x0, double x1, double y0 = 0.3, double y1 = 1.0) {
   EXPECT_EQ(a.width, b.width);
   EXPECT_EQ(a.height, b.height);
   EXPECT_EQ(a.channels, b.channels);
   const int from = int(x0 * a.width), to = int(x1 * a.width);
   double sum = 0;
   std::size_t n = 0;
-  for (int y = 0; y < a.height; ++y)
+  for (int y = int(y0 * a.height); y < int(y1 * a.height); ++y)
     for (int x = from; x < to; ++x)
       for (int c = 0; c < a.channels; ++c, ++n) sum += std::abs(a.at(x, y, c) - b.at(x, y, c));
   return n ? sum / double(n) : 0.0;

@@ -2,7 +2,8 @@
 // {"schema": 1, "frames", "scene", "techniques", "render_size": [w, h], "render_scale",
 //  "view": {"aov", "mode", "min", "max", "false_color"}, "compare": {"mode", "divider"},
 //  "reference": {"aov", "samples", "running", "rmse", "flip", "metrics_samples", "error"},
-//  "timing", "frame_ms", "passes": [{"name", "technique", "ms"}], "gl_errors",
+//  "timing", "frame_ms" (the last frame), "frame_ms_median" and "frame_ms_samples" (the frames of
+//  the timings graph: up to 120, since the render size last changed), "passes": [{"name", "technique", "ms"}], "gl_errors",
 //  "shader_errors": ["file:line: ..."], "lecture", "bookmark", "params": {KEY: value}}
 // rmse and flip are null until the live metrics have been computed.
 #pragma once

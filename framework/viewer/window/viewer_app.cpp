@@ -114,6 +114,8 @@ int runViewer(ViewerOptions options) {
 
     frame.render(state, w, h, script && script->wantsReference(), f.options.seed);
     if (showPanel) drawViewerPanel(state);
+    drawInfoOverlay(state, frame.renderWidth(), frame.renderHeight());
+    drawLectureCaption(state);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     state.glErrors += drainGlErrors();

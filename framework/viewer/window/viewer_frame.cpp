@@ -51,8 +51,11 @@ void ViewerFrame::render(ViewerState& state, int windowWidth, int windowHeight, 
     m_renderer.setTechniques(state.selection.ordered());
     state.techniquesChanged = false;
   }
-  m_width = std::max(1, int(std::lround(windowWidth * state.renderScale)));
-  m_height = std::max(1, int(std::lround(windowHeight * state.renderScale)));
+  const int width = std::max(1, int(std::lround(windowWidth * state.renderScale)));
+  const int height = std::max(1, int(std::lround(windowHeight * state.renderScale)));
+  if (width != m_width || height != m_height) state.frameHistory.clear(); // the graph is per render size
+  m_width = width;
+  m_height = height;
   bool reference = referenceWanted || state.compare.mode == CompareMode::Reference ||
                          state.compare.mode == CompareMode::Difference;
   const std::string referenceAov = referenceAovFor(state);
@@ -70,6 +73,7 @@ void ViewerFrame::render(ViewerState& state, int windowWidth, int windowHeight, 
     reference = false;
   }
   state.glErrors += drainGlErrors();
+  if (state.view.autoRangeRequested && m_rendered) autoRange(state);
   if (reference && m_rendered) m_reference.update(state, m_renderer, seed, m_width, m_height);
   else m_reference.stop(state);
   draw(state, windowWidth, windowHeight, referenceAov);
@@ -78,6 +82,28 @@ void ViewerFrame::render(ViewerState& state, int windowWidth, int windowHeight, 
 
 DisplaySide ViewerFrame::aovSide(const std::string& aov) {
   return DisplaySide{m_renderer.resource(aovResource(aov)), DisplayKind::Data, aovChannels(aov, m_registry)};
+}
+
+void ViewerFrame::autoRange(ViewerState& state) {
+  state.view.autoRangeRequested = false;
+  if (state.view.mode == DebugMode::Off) return;
+  const Image image = m_renderer.readAov(state.view.aov);
+  float lo = INFINITY, hi = -INFINITY;
+  for (std::size_t i = 0; i < image.pixelCount(); ++i) {
+    if (image.hasMask() && image.mask[i] < 0.5f) continue; // background holds 0, not data
+    for (int c = 0; c < image.channels; ++c) {
+      const float v = image.pixels[i * std::size_t(image.channels) + std::size_t(c)];
+      if (!std::isfinite(v)) continue;
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  }
+  if (!(lo < hi)) {
+    state.status = "auto range: the view holds a single value";
+    return;
+  }
+  state.view.min = lo;
+  state.view.max = hi;
 }
 
 void ViewerFrame::takeSnapshot(ViewerState& state, const DisplaySide& side) {

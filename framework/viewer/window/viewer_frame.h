@@ -26,6 +26,7 @@ private:
   FrameOutputs outputsFor(ViewerState& state, bool reference, const std::string& referenceAov);
   void recordTimings(ViewerState& state);
   void takeSnapshot(ViewerState& state, const DisplaySide& side);
+  void autoRange(ViewerState& state);
   void draw(ViewerState& state, int windowWidth, int windowHeight, const std::string& referenceAov);
   DisplaySide aovSide(const std::string& aov);
 
