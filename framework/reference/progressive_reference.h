@@ -28,7 +28,7 @@ namespace rtlab {
 
 struct ProgressiveOptions {
   int targetSpp = 1024;  // stop refining at this many samples per pixel (kReferenceMinSpp..kReferenceMaxSpp)
-  int batchMaxSpp = 16;  // largest batch, 1..kReferenceMaxSpp (keeps a restart's latency bounded)
+  int batchMaxSpp = 16;  // largest batch, 1..kReferenceMaxSpp: bounds the time between two snapshots
   unsigned seed = 1;     // batch k uses a seed derived from (seed, k): batches are independent
   float aoRadius = 0.5f; // ao.radius
   int threads = 0;       // 0: max(1, hardware threads - 1); otherwise 1..1024
