@@ -8,6 +8,7 @@
 #include "frame/renderer.h"
 #include "image/metrics.h"
 #include "platform/context.h"
+#include "reference/live_metrics.h"
 #include "reference/progressive_reference.h"
 #include "scene/scene_params.h"
 #include "util/error.h"
@@ -60,8 +61,9 @@ int runProgressiveBench(const ResolvedFrame& frame, const std::vector<std::strin
               "truth %d spp\n",
               frame.scene.name.c_str(), frame.options.width, frame.options.height, workers,
               tbb::info::default_concurrency(), truthSpp);
-  std::printf("%-11s %8s %8s %8s %9s | %9s %9s | %11s %11s %11s %11s\n", "aov", "first s", "16spp s", "64spp s",
-              "restart s", "single16", "single64", "rmse prog16", "rmse 1pass16", "rmse prog64", "rmse 1pass64");
+  std::printf("%-11s %8s %8s %8s %9s | %9s %9s | %11s %12s %11s %12s | %8s\n", "aov", "first s", "16spp s", "64spp s",
+              "restart s", "single16", "single64", "rmse prog16", "rmse 1pass16", "rmse prog64", "rmse 1pass64",
+              "live ms");
   auto context = createHeadlessContext(frame.options.backend);
   Renderer renderer(TechniqueRegistry::instance());
   renderer.setScene(frame.scene);
@@ -111,10 +113,20 @@ int runProgressiveBench(const ResolvedFrame& frame, const std::vector<std::strin
     single.seed = frame.options.seed + 1000; // independent of both estimates
     arena.execute([&] { truth = renderReference(scene, surfaces, aov, single); });
 
-    std::printf("%-11s %8.3f %8.3f %8.3f %9.3f | %9.3f %9.3f | %11.5f %11.5f %11.5f %11.5f\n", aov.c_str(), p.first,
-                p.at16, p.at64, restart, time16, time64, computeMetrics(truth, p.mean16).rmse,
+    // What the viewer pays per new snapshot for its live figures (RMSE, SSIM, FLIP, ...).
+    ProgressiveSnapshot snapshot;
+    snapshot.image = p.mean64;
+    snapshot.samples = 64;
+    snapshot.generation = 1;
+    const auto t4 = Clock::now();
+    const LiveMetrics live = computeLiveMetrics(once16, snapshot);
+    const double liveMs = secondsSince(t4) * 1e3;
+    if (!live.ready) throw Error(ExitCode::Internal, "live metrics not ready: " + live.reason);
+
+    std::printf("%-11s %8.3f %8.3f %8.3f %9.3f | %9.3f %9.3f | %11.5f %12.5f %11.5f %12.5f | %8.1f\n", aov.c_str(),
+                p.first, p.at16, p.at64, restart, time16, time64, computeMetrics(truth, p.mean16).rmse,
                 computeMetrics(truth, once16).rmse, computeMetrics(truth, p.mean64).rmse,
-                computeMetrics(truth, once64).rmse);
+                computeMetrics(truth, once64).rmse, liveMs);
   }
   return 0;
 }

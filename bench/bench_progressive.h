@@ -9,6 +9,7 @@
 
 // Per AOV: time to the first snapshot, to 16 and 64 spp, and to the first snapshot of a restart
 // that reuses the BVH; single-pass times at 16 and 64 spp on as many threads; RMSE of the
-// progressive mean and of the single pass, each against a truthSpp single pass of another seed.
+// progressive mean and of the single pass, each against a truthSpp single pass of another seed;
+// the time of computeLiveMetrics on one frame (the single 16 spp pass against the 64 spp mean).
 int runProgressiveBench(const rtlab::ResolvedFrame& frame, const std::vector<std::string>& aovs, int threads,
                         int truthSpp);
