@@ -3,14 +3,13 @@
 // viewer would see it, polling latest() every half millisecond.
 #include "bench_progressive.h"
 
-#include "frame/pass_timer.h"
+#include "app/reference_run.h"
 #include "frame/registry.h"
 #include "frame/renderer.h"
 #include "image/metrics.h"
 #include "platform/context.h"
 #include "reference/live_metrics.h"
 #include "reference/progressive_reference.h"
-#include "scene/scene_params.h"
 #include "util/error.h"
 
 #include <tbb/info.h>
@@ -67,13 +66,9 @@ int runProgressiveBench(const ResolvedFrame& frame, const std::vector<std::strin
   auto context = createHeadlessContext(frame.options.backend);
   Renderer renderer(TechniqueRegistry::instance());
   renderer.setScene(frame.scene);
-  FrameOutputs outputs;
-  outputs.surfaces = true;
-  PassTimer timer(TimingMethod::CpuFinish);
-  renderer.render(frame.params, frame.options.width, frame.options.height, outputs, timer);
-  const SurfaceData surfaces = renderer.readSurfaces();
-  Scene scene = frame.scene;
-  applySceneParams(frame.params, scene);
+  const ReferenceInput input = referenceInput(renderer, frame);
+  const Scene& scene = input.scene;
+  const SurfaceData& surfaces = input.surfaces;
 
   for (const std::string& aov : aovs) {
     ProgressiveOptions options;
