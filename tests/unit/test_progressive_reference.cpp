@@ -218,7 +218,7 @@ TEST(ProgressiveReference, DeterministicForASeedWhateverTheThreadsAndTheBvhSourc
   EXPECT_NE(waitConverged(b).image.pixels, one.image.pixels);
 }
 
-TEST(ProgressiveReference, EveryAovHasTheSingePassShape) {
+TEST(ProgressiveReference, EveryAovHasTheSinglePassShape) {
   Scene s;
   test::addQuad(s, {0, 0, 0}, {20, 0, 0}, {0, 0, -20});
   s.camera.position = {0, 10, 5};
