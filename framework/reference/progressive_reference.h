@@ -64,10 +64,12 @@ public:
   std::uint64_t start(const Scene& scene, SurfaceData surfaces, const std::string& aov,
                       const ProgressiveOptions& options);
   // The same on a prepared scene (BVH built): only the lights and the camera position are taken
-  // from `scene`; geometry and materials come from `prepared`, which must hold the same ones.
+  // from `scene`; geometry and materials come from `prepared`, which must hold the same ones. A
+  // null `prepared` behaves as the overload above.
   std::uint64_t start(std::shared_ptr<const PreparedReferenceScene> prepared, const Scene& scene, SurfaceData surfaces,
                       const std::string& aov, const ProgressiveOptions& options);
-  // Cancels the job in progress (if any) and waits for the worker to stop (at most one tile).
+  // Cancels the job in progress (if any) and waits for the worker to stop: at most one tile, or
+  // the BVH build in progress (Embree cannot interrupt it).
   void stop();
 
   // If a batch of the current generation completed since `out` was filled (another generation,
