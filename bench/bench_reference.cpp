@@ -4,6 +4,11 @@
 // shared machines disturb less than wall time) and the whole job as
 // `rtlab reference` does it in one process: GL context, G-buffer, read-back, ray casting.
 //   rtlab_bench_reference [scene and frame options] [--aov A[,A]] [--spp N] [--repeat N] [--threads N]
+// With --progressive it measures the viewer's progressive reference instead (bench_progressive.h),
+// default cornell at 320x180:
+//   rtlab_bench_reference --progressive [scene and frame options] [--aov A[,A]] [--threads N] [--truth-spp N]
+#include "bench_progressive.h"
+
 #include "app/frame_options.h"
 #include "app/reference_run.h"
 #include "frame/registry.h"
@@ -48,7 +53,9 @@ int main(int argc, char** argv) {
     specs.push_back({"--aov", "", true, "A[,A]", "AOVs to measure (default visibility,ao,indirect)"});
     specs.push_back({"--spp", "", true, "N", "samples per pixel (default 64)"});
     specs.push_back({"--repeat", "", true, "N", "ray-casting runs per AOV, median reported (default 3)"});
-    specs.push_back({"--threads", "", true, "N", "worker threads (default: all cores)"});
+    specs.push_back({"--threads", "", true, "N", "worker threads (default: all cores; --progressive: all but one)"});
+    specs.push_back({"--progressive", "", false, "", "measure the progressive reference (bench_progressive.h)"});
+    specs.push_back({"--truth-spp", "", true, "N", "--progressive: samples of the truth image (default 1024)"});
     Args args("bench_reference", specs, argc, argv, 1);
     if (args.help()) {
       std::fputs(formatHelp("rtlab_bench_reference [options]", "CPU reference throughput.", specs).c_str(), stdout);
@@ -59,8 +66,15 @@ int main(int argc, char** argv) {
       frame = makeResolvedFrame("cornell", "", frame.options);
       frame.options.sceneSpec = "cornell";
     }
-    if (!args.has("--size")) frame.options.width = 512, frame.options.height = 512;
+    const bool progressive = args.has("--progressive");
+    if (!args.has("--size")) frame.options.width = progressive ? 320 : 512, frame.options.height = progressive ? 180 : 512;
     const auto aovs = splitList(args.get("--aov", "visibility,ao,indirect"));
+    if (progressive) {
+      const int threads = int(parseIntOption("--threads", args.get("--threads", "0"), 0, 1024));
+      const int truthSpp =
+          int(parseIntOption("--truth-spp", args.get("--truth-spp", "1024"), kReferenceMinSpp, kReferenceMaxSpp));
+      return runProgressiveBench(frame, aovs, threads, truthSpp);
+    }
     const int spp = int(parseIntOption("--spp", args.get("--spp", "64"), kReferenceMinSpp, kReferenceMaxSpp));
     const int repeat = int(parseIntOption("--repeat", args.get("--repeat", "3"), 1, 100));
     const int threads = int(parseIntOption("--threads", args.get("--threads", "0"), 0, 1024));

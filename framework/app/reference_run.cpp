@@ -7,6 +7,23 @@
 
 namespace rtlab {
 
+ReferenceInput referenceInput(Renderer& renderer, const ResolvedFrame& frame) {
+  // The G-buffer of this frame: the same surface points the GPU shades. Only the G-buffer passes
+  // run (the graph culls everything else), whatever techniques are active.
+  FrameOutputs outputs;
+  outputs.surfaces = true;
+  PassTimer timer(TimingMethod::CpuFinish);
+  renderer.render(frame.params, frame.options.width, frame.options.height, outputs, timer);
+  ReferenceInput input;
+  input.surfaces = renderer.readSurfaces();
+
+  // The lights and camera as this frame's parameters set them (a sweep may vary light<N>.* in
+  // frame.params without touching frame.scene).
+  input.scene = frame.scene;
+  applySceneParams(frame.params, input.scene);
+  return input;
+}
+
 Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const std::string& aov, int spp,
                            bool progress) {
   ReferenceStats stats;
@@ -25,19 +42,8 @@ Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const
     usageError("--spp " + std::to_string(spp) + " is out of range " + std::to_string(kReferenceMinSpp) + ".." +
                std::to_string(kReferenceMaxSpp));
 
-  // The G-buffer of this frame: the same surface points the GPU shades. Only the G-buffer passes
-  // run (the graph culls everything else), whatever techniques are active.
-  FrameOutputs outputs;
-  outputs.surfaces = true;
-  PassTimer timer(TimingMethod::CpuFinish);
-  renderer.render(frame.params, frame.options.width, frame.options.height, outputs, timer);
-  const SurfaceData surfaces = renderer.readSurfaces();
-
-  // The lights and camera as this frame's parameters set them (a sweep may vary light<N>.* in
-  // frame.params without touching frame.scene).
-  Scene scene = frame.scene;
-  applySceneParams(frame.params, scene);
-  return renderReference(scene, surfaces, aov, options, stats);
+  const ReferenceInput input = referenceInput(renderer, frame);
+  return renderReference(input.scene, input.surfaces, aov, options, stats);
 }
 
 } // namespace rtlab

@@ -11,6 +11,15 @@
 
 namespace rtlab {
 
+// What the reference of a frame starts from: the surface points of the frame's G-buffer (rendered
+// with `renderer`, which must hold frame.scene) and the scene with the lights and camera as
+// frame.params set them. Shared by renderReferenceFrame and the progressive-reference benchmark.
+struct ReferenceInput {
+  Scene scene;
+  SurfaceData surfaces;
+};
+ReferenceInput referenceInput(Renderer& renderer, const ResolvedFrame& frame);
+
 // aov: visibility | ao | indirect (Error(Usage) otherwise). ao.radius comes from frame.params;
 // the seed from frame.options.seed.
 // The renderer must hold frame.scene (Renderer::setScene); its active techniques do not matter.

@@ -28,7 +28,7 @@ namespace rtlab {
 
 struct ProgressiveOptions {
   int targetSpp = 1024;  // stop refining at this many samples per pixel (kReferenceMinSpp..kReferenceMaxSpp)
-  int batchMaxSpp = 16;  // largest batch, 1..kReferenceMaxSpp (keeps a restart's latency bounded)
+  int batchMaxSpp = 16;  // largest batch, 1..kReferenceMaxSpp: bounds the time between two snapshots
   unsigned seed = 1;     // batch k uses a seed derived from (seed, k): batches are independent
   float aoRadius = 0.5f; // ao.radius
   int threads = 0;       // 0: max(1, hardware threads - 1); otherwise 1..1024
@@ -64,10 +64,12 @@ public:
   std::uint64_t start(const Scene& scene, SurfaceData surfaces, const std::string& aov,
                       const ProgressiveOptions& options);
   // The same on a prepared scene (BVH built): only the lights and the camera position are taken
-  // from `scene`; geometry and materials come from `prepared`, which must hold the same ones.
+  // from `scene`; geometry and materials come from `prepared`, which must hold the same ones. A
+  // null `prepared` behaves as the overload above.
   std::uint64_t start(std::shared_ptr<const PreparedReferenceScene> prepared, const Scene& scene, SurfaceData surfaces,
                       const std::string& aov, const ProgressiveOptions& options);
-  // Cancels the job in progress (if any) and waits for the worker to stop (at most one tile).
+  // Cancels the job in progress (if any) and waits for the worker to stop: at most one tile, or
+  // the BVH build in progress (Embree cannot interrupt it).
   void stop();
 
   // If a batch of the current generation completed since `out` was filled (another generation,

@@ -121,11 +121,12 @@ TEST(ProgressiveReference, LatestCopiesOnlyWhatIsNew) {
 }
 
 TEST(ProgressiveReference, RestartIsPromptAndBumpsTheGeneration) {
-  // 256x256 points and a target that is never reached: the worker is always in a batch. A batch
-  // here is up to 16 spp over 65536 pixels (about a million AO rays); cancelling waits for one
-  // 16x16 tile per thread (4096 rays). The bounds are loose (2 s) because the test machine may
-  // be shared and loaded; a worker that finished its batch before noticing would take far longer
-  // than a tile on a loaded machine only at larger images, so this bounds the wiring, not speed.
+  // 256x256 points and a target that is never reached, so the worker is always inside a batch:
+  // at 16 spp a batch is a million AO rays, a 16x16 tile 4096. start() must return without
+  // waiting for the worker at all; stop() waits for at most one tile per thread. The bounds (0.5 s
+  // and 2 s) are far above a tile's cost and loose on purpose: the test machine may be shared and
+  // loaded, and a descheduled thread must not fail the test. They catch a start() that joins the
+  // worker or a cancellation that never reaches the batch loop.
   const test::WallCase c = test::wallCase(256, 256, 0.95f);
   ProgressiveReference ref;
   const std::uint64_t first = ref.start(c.scene, c.points, "ao", progressive(65536, c.radius));
@@ -150,6 +151,14 @@ TEST(ProgressiveReference, RestartIsPromptAndBumpsTheGeneration) {
   EXPECT_GE(snap.samples, 1);
   RecordProperty("restart_to_first_batch_s", std::to_string(secondsSince(restart)));
 
+  // Stop inside a 16 spp batch (samples 32 -> 48), having timed the previous one (16 -> 32).
+  Clock::time_point at16 = restart;
+  while (ref.samples() < 32 && secondsSince(restart) < 60.0) {
+    if (ref.samples() < 16) at16 = Clock::now();
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  ASSERT_GE(ref.samples(), 32);
+  RecordProperty("batch_16spp_s", std::to_string(secondsSince(at16)));
   const auto stop = Clock::now();
   ref.stop();
   const double stopSeconds = secondsSince(stop);
@@ -209,7 +218,7 @@ TEST(ProgressiveReference, DeterministicForASeedWhateverTheThreadsAndTheBvhSourc
   EXPECT_NE(waitConverged(b).image.pixels, one.image.pixels);
 }
 
-TEST(ProgressiveReference, EveryAovHasTheSingePassShape) {
+TEST(ProgressiveReference, EveryAovHasTheSinglePassShape) {
   Scene s;
   test::addQuad(s, {0, 0, 0}, {20, 0, 0}, {0, 0, -20});
   s.camera.position = {0, 10, 5};
