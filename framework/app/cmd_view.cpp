@@ -26,9 +26,11 @@ bool hasDisplay() {
 
 int runView(int argc, char** argv) {
   auto specs = frameOptionSpecs();
-  specs.push_back({"--screenshot", "", true, "FILE", "after --frames N frames, save the window (UI included) as PNG and exit"});
+  specs.push_back(
+      {"--screenshot", "", true, "FILE", "after --frames N frames, save the window (UI included) as PNG and exit"});
   specs.push_back({"--script", "", true, "FILE", "run a JSON list of actions (docs/viewer-scripts.md)"});
-  specs.push_back({"--bookmarks", "", true, "FILE", "lecture bookmarks, stepped with the arrow keys (docs/viewer-scripts.md)"});
+  specs.push_back(
+      {"--bookmarks", "", true, "FILE", "lecture bookmarks, stepped with the arrow keys (docs/viewer-scripts.md)"});
   Args args("view", specs, argc, argv, 2);
   if (args.help()) {
     std::cout << formatHelp("rtlab view [scene and frame options] [--frames N --screenshot FILE] [--script FILE] "

@@ -16,7 +16,8 @@ void runGuarded(ViewerState& state, const std::function<void()>& action) {
 }
 
 void applyEdits(ViewerState& state, const std::vector<ParamEdit>& edits) {
-  for (const auto& e : edits) runGuarded(state, [&] { setParamValueAction(state, e.key, e.value); });
+  for (const auto& e : edits)
+    runGuarded(state, [&] { setParamValueAction(state, e.key, e.value); });
 }
 
 void drawViewerPanel(ViewerState& state) {
@@ -28,7 +29,8 @@ void drawViewerPanel(ViewerState& state) {
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
   if (ImGui::Begin("rtlab", nullptr, flags)) {
     if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
-    for (const auto& e : state.shaderErrors) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", e.c_str());
+    for (const auto& e : state.shaderErrors)
+      ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", e.c_str());
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) drawScenePanel(state);
     if (ImGui::CollapsingHeader("Techniques", ImGuiTreeNodeFlags_DefaultOpen)) drawTechniquePanel(state);
     if (ImGui::CollapsingHeader("Lights")) drawLightPanel(state);
@@ -51,9 +53,11 @@ void drawInfoOverlay(const ViewerState& state, int renderWidth, int renderHeight
     ImGui::Text("%.1f ms (%s)  %dx%d", state.frameMs, state.timingMethod.c_str(), renderWidth, renderHeight);
     const auto& r = state.reference;
     if (state.compare.mode == CompareMode::Reference || state.compare.mode == CompareMode::Difference) {
-      if (r.rmse) ImGui::Text("%s vs reference: RMSE %.4f  FLIP %.4f  (%d spp)", r.aov.c_str(), *r.rmse,
-                              r.flip.value_or(0.0), r.metricsSamples);
-      else ImGui::Text("reference: %d spp", r.samples);
+      if (r.rmse)
+        ImGui::Text("%s vs reference: RMSE %.4f  FLIP %.4f  (%d spp)", r.aov.c_str(), *r.rmse, r.flip.value_or(0.0),
+                    r.metricsSamples);
+      else
+        ImGui::Text("reference: %d spp", r.samples);
     }
   }
   ImGui::End();

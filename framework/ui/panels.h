@@ -20,13 +20,13 @@ void drawInfoOverlay(const ViewerState& state, int renderWidth, int renderHeight
 void drawLectureCaption(const ViewerState& state);
 
 // Sections (each in its own file).
-void drawScenePanel(ViewerState& state);      // scene picker, presets, bookmarks    (scene_panel.cpp)
-void drawLightPanel(ViewerState& state);      // light<N>.* keys                     (scene_panel.cpp)
-void drawTechniquePanel(ViewerState& state);  // per stage: selector with off, params (technique_panel.cpp)
-void drawTonemapPanel(ViewerState& state);    // tonemap.* keys                      (technique_panel.cpp)
-void drawViewPanel(ViewerState& state);       // debug view, render scale            (view_panel.cpp)
-void drawComparePanel(ViewerState& state);    // compare mode, divider, live metrics  (view_panel.cpp)
-void drawTimingsPanel(ViewerState& state);    // per-pass ms, method, history graph  (timings_panel.cpp)
+void drawScenePanel(ViewerState& state);     // scene picker, presets, bookmarks    (scene_panel.cpp)
+void drawLightPanel(ViewerState& state);     // light<N>.* keys                     (scene_panel.cpp)
+void drawTechniquePanel(ViewerState& state); // per stage: selector with off, params (technique_panel.cpp)
+void drawTonemapPanel(ViewerState& state);   // tonemap.* keys                      (technique_panel.cpp)
+void drawViewPanel(ViewerState& state);      // debug view, render scale            (view_panel.cpp)
+void drawComparePanel(ViewerState& state);   // compare mode, divider, live metrics  (view_panel.cpp)
+void drawTimingsPanel(ViewerState& state);   // per-pass ms, method, history graph  (timings_panel.cpp)
 
 // Runs an action, putting an Error's message in the status line instead of throwing.
 void runGuarded(ViewerState& state, const std::function<void()>& action);

@@ -24,16 +24,19 @@ std::string numberFormat(const ParamSpec& spec) {
   std::string f = spec.type == ParamType::Int ? "%d" : "%.4g";
   if (spec.unit.empty()) return f;
   f += ' ';
-  for (char c : spec.unit) f += c == '%' ? std::string("%%") : std::string(1, c); // '%' is a directive
+  for (char c : spec.unit)
+    f += c == '%' ? std::string("%%") : std::string(1, c); // '%' is a directive
   return f;
 }
 
 bool drawValue(const ParamSpec& spec, ParamValue& value, const char* id) {
-  const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (spec.scale == ParamScale::Log ? ImGuiSliderFlags_Logarithmic : 0);
+  const ImGuiSliderFlags flags =
+      ImGuiSliderFlags_AlwaysClamp | (spec.scale == ParamScale::Log ? ImGuiSliderFlags_Logarithmic : 0);
   switch (spec.type) {
   case ParamType::Float: {
     float v = float(value.v[0]);
-    const bool changed = ImGui::SliderFloat(id, &v, float(spec.min), float(spec.max), numberFormat(spec).c_str(), flags);
+    const bool changed =
+        ImGui::SliderFloat(id, &v, float(spec.min), float(spec.max), numberFormat(spec).c_str(), flags);
     if (changed) value.v[0] = std::clamp(double(v), spec.min, spec.max);
     return changed;
   }
@@ -69,7 +72,8 @@ bool drawValue(const ParamSpec& spec, ParamValue& value, const char* id) {
                              ? ImGui::ColorEdit3(id, v, ImGuiColorEditFlags_Float)
                              : ImGui::DragFloat3(id, v, 0.01f, float(spec.min), float(spec.max), "%.3f", flags);
     if (changed)
-      for (int c = 0; c < 3; ++c) value.v[std::size_t(c)] = std::clamp(double(v[c]), spec.min, spec.max);
+      for (int c = 0; c < 3; ++c)
+        value.v[std::size_t(c)] = std::clamp(double(v[c]), spec.min, spec.max);
     return changed;
   }
   }

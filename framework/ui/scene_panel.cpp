@@ -24,7 +24,8 @@ void drawScenePanel(ViewerState& state) {
 
   ImGui::InputText("##preset", &state.presetPathInput);
   ImGui::SameLine();
-  if (ImGui::Button("Save")) runGuarded(state, [&] {
+  if (ImGui::Button("Save"))
+    runGuarded(state, [&] {
       savePresetAction(state, state.presetPathInput);
       state.status = "saved preset " + state.presetPathInput;
     });

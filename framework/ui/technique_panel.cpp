@@ -17,7 +17,8 @@ void drawExclusiveSelector(ViewerState& state, const StageInfo& stage) {
   const TechniqueRegistry& registry = *state.registry;
   const std::string active = state.selection.activeIn(stage.id);
   if (ImGui::BeginCombo(stage.id.c_str(), active.empty() ? "off" : active.c_str())) {
-    if (ImGui::Selectable("off", active.empty())) runGuarded(state, [&] { selectTechniqueAction(state, stage.id, "off"); });
+    if (ImGui::Selectable("off", active.empty()))
+      runGuarded(state, [&] { selectTechniqueAction(state, stage.id, "off"); });
     for (const auto& e : registry.entries()) {
       if (e.info.stage != stage.id) continue;
       if (ImGui::Selectable(e.info.id.c_str(), e.info.id == active))
@@ -33,8 +34,10 @@ void drawStackSelector(ViewerState& state, const StageInfo& stage) {
     if (e.info.stage != stage.id) continue;
     bool on = state.selection.isActive(e.info.id);
     if (ImGui::Checkbox(e.info.id.c_str(), &on)) {
-      if (on) state.selection.activate(e.info.id);
-      else state.selection.deactivate(e.info.id);
+      if (on)
+        state.selection.activate(e.info.id);
+      else
+        state.selection.deactivate(e.info.id);
       state.techniquesChanged = true;
     }
   }
@@ -47,11 +50,14 @@ void drawTechniquePanel(ViewerState& state) {
   std::vector<ParamEdit> edits;
   for (const auto& stage : stages()) {
     bool any = false;
-    for (const auto& e : registry.entries()) any |= e.info.stage == stage.id;
+    for (const auto& e : registry.entries())
+      any |= e.info.stage == stage.id;
     if (!any && stage.params.empty()) continue; // a stage with nothing to choose or set
     ImGui::PushID(stage.id.c_str());
-    if (stage.exclusive) drawExclusiveSelector(state, stage);
-    else drawStackSelector(state, stage);
+    if (stage.exclusive)
+      drawExclusiveSelector(state, stage);
+    else
+      drawStackSelector(state, stage);
     if (!stage.params.empty() && ImGui::TreeNode("stage", "%s parameters", stage.id.c_str())) {
       drawParamGroup(state.params, stage.id + ".", edits);
       ImGui::TreePop();

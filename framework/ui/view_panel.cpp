@@ -15,14 +15,15 @@ namespace {
 
 std::vector<std::string> viewableAovs(const ViewerState& state) {
   std::vector<std::string> names;
-  for (const auto& a : builtinAovs()) names.push_back(a.name);
+  for (const auto& a : builtinAovs())
+    names.push_back(a.name);
   for (const auto& id : state.selection.ordered())
-    for (const auto& v : state.registry->get(id).info.debugViews) names.push_back(v.name);
+    for (const auto& v : state.registry->get(id).info.debugViews)
+      names.push_back(v.name);
   return names;
 }
 
-template <typename Mode>
-void modeRadios(Mode& mode, std::initializer_list<std::pair<const char*, Mode>> choices) {
+template <typename Mode> void modeRadios(Mode& mode, std::initializer_list<std::pair<const char*, Mode>> choices) {
   bool first = true;
   for (const auto& [label, value] : choices) {
     if (!first) ImGui::SameLine();
@@ -69,8 +70,11 @@ void drawComparePanel(ViewerState& state) {
   const auto& r = state.reference;
   if (!r.aov.empty()) {
     ImGui::Text("reference: %s, %d spp%s", r.aov.c_str(), r.samples, r.running ? " (refining)" : "");
-    if (r.rmse) ImGui::Text("RMSE %.4f  FLIP %.4f  at %d spp", *r.rmse, r.flip.value_or(0.0), r.metricsSamples);
-    else ImGui::TextDisabled("%s", r.waiting.empty() ? "metrics once the reference has converged enough" : r.waiting.c_str());
+    if (r.rmse)
+      ImGui::Text("RMSE %.4f  FLIP %.4f  at %d spp", *r.rmse, r.flip.value_or(0.0), r.metricsSamples);
+    else
+      ImGui::TextDisabled("%s",
+                          r.waiting.empty() ? "metrics once the reference has converged enough" : r.waiting.c_str());
   }
   if (!r.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", r.error.c_str());
 }

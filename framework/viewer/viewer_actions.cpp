@@ -14,7 +14,9 @@
 namespace rtlab {
 namespace {
 
-bool isSceneKey(const std::string& key) { return key.rfind("light", 0) == 0 || key.rfind("camera.", 0) == 0; }
+bool isSceneKey(const std::string& key) {
+  return key.rfind("light", 0) == 0 || key.rfind("camera.", 0) == 0;
+}
 
 void applyScene(ViewerState& state) {
   applySceneParams(state.params, state.scene);
@@ -25,18 +27,25 @@ void applyScene(ViewerState& state) {
 
 const char* debugModeName(DebugMode mode) {
   switch (mode) {
-  case DebugMode::Full: return "full";
-  case DebugMode::Pip: return "pip";
-  default: return "off";
+  case DebugMode::Full:
+    return "full";
+  case DebugMode::Pip:
+    return "pip";
+  default:
+    return "off";
   }
 }
 
 const char* compareModeName(CompareMode mode) {
   switch (mode) {
-  case CompareMode::Reference: return "reference";
-  case CompareMode::Snapshot: return "snapshot";
-  case CompareMode::Difference: return "difference";
-  default: return "off";
+  case CompareMode::Reference:
+    return "reference";
+  case CompareMode::Snapshot:
+    return "snapshot";
+  case CompareMode::Difference:
+    return "difference";
+  default:
+    return "off";
   }
 }
 
@@ -124,7 +133,8 @@ void viewAction(ViewerState& state, const nlohmann::json& fields) {
   if (auto hi = optionalNumber(fields, "max", where)) v.max = float(*hi);
   if (auto fc = optionalBool(fields, "false_color", where)) v.falseColor = *fc;
   if (!(v.min < v.max))
-    usageError("view range: min (" + shortestDecimal(v.min) + ") must be less than max (" + shortestDecimal(v.max) + ")");
+    usageError("view range: min (" + shortestDecimal(v.min) + ") must be less than max (" + shortestDecimal(v.max) +
+               ")");
   state.view = v;
 }
 
@@ -149,7 +159,8 @@ void loadPresetAction(ViewerState& state, const std::string& path) {
   TechniqueSelection selection = state.selection;
   if (preset.techniques) {
     selection.clear();
-    for (const auto& id : *preset.techniques) selection.activate(id);
+    for (const auto& id : *preset.techniques)
+      selection.activate(id);
   }
   ParamSet copy = state.params;
   applyPreset(preset, copy, path);
@@ -168,16 +179,19 @@ void bookmarkAction(ViewerState& state, int index) {
   if (b.scene && *b.scene != state.sceneSpec) loadSceneAction(state, *b.scene);
   if (b.techniques) {
     TechniqueSelection selection(*state.registry);
-    for (const auto& id : *b.techniques) selection.activate(id);
+    for (const auto& id : *b.techniques)
+      selection.activate(id);
     state.selection = selection;
     state.techniquesChanged = true;
   }
   ParamSet copy = state.params;
-  for (const auto& [key, value] : b.params.items()) copy.setJson(key, value);
+  for (const auto& [key, value] : b.params.items())
+    copy.setJson(key, value);
   applySceneParams(copy, state.scene);
   state.params = std::move(copy);
   syncCameraFromParams(state);
-  if (b.cameraPosition || b.cameraTarget || b.cameraFov) cameraAction(state, b.cameraPosition, b.cameraTarget, b.cameraFov);
+  if (b.cameraPosition || b.cameraTarget || b.cameraFov)
+    cameraAction(state, b.cameraPosition, b.cameraTarget, b.cameraFov);
   if (!b.view.empty()) viewAction(state, b.view);
   if (!b.compare.empty()) compareAction(state, b.compare);
   state.bookmark = index;

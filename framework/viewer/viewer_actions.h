@@ -23,8 +23,8 @@ void setParamAction(ViewerState& state, const std::string& key, const nlohmann::
 void setParamValueAction(ViewerState& state, const std::string& key, const ParamValue& value);
 void resetParamAction(ViewerState& state, const std::string& key);
 // Moves the camera; each part optional. Values are checked against the camera.* keys.
-void cameraAction(ViewerState& state, const std::optional<glm::vec3>& position,
-                  const std::optional<glm::vec3>& target, const std::optional<float>& fov);
+void cameraAction(ViewerState& state, const std::optional<glm::vec3>& position, const std::optional<glm::vec3>& target,
+                  const std::optional<float>& fov);
 // Applies a "view" object / a "compare" object (viewer/view_fields.h), fields optional.
 void viewAction(ViewerState& state, const nlohmann::json& fields);
 void compareAction(ViewerState& state, const nlohmann::json& fields);

@@ -22,8 +22,8 @@ enum class CompareMode { Off, Reference, Snapshot, Difference };
 struct DebugViewSettings {
   std::string aov = "visibility"; // a built-in AOV or an active technique's debug view
   DebugMode mode = DebugMode::Off;
-  float min = 0.0f, max = 1.0f; // value range mapped to black..white (or the false-color scale)
-  bool falseColor = false;      // scalar data through a color map
+  float min = 0.0f, max = 1.0f;    // value range mapped to black..white (or the false-color scale)
+  bool falseColor = false;         // scalar data through a color map
   bool autoRangeRequested = false; // set min/max from the next frame's values (valid pixels)
 };
 
@@ -42,14 +42,14 @@ struct ViewerState {
   explicit ViewerState(const TechniqueRegistry& techniques) : registry(&techniques), selection(techniques) {}
 
   const TechniqueRegistry* registry; // the techniques the panels and actions offer
-  std::string sceneSpec; // --scene value of the loaded scene
+  std::string sceneSpec;             // --scene value of the loaded scene
   Scene scene;
   ParamSet params;
   TechniqueSelection selection;
   CameraController camera;
-  bool sceneChanged = true;      // the renderer must upload the scene again
+  bool sceneChanged = true;          // the renderer must upload the scene again
   unsigned long sceneGeneration = 0; // counts scene loads (the reference's BVH follows it)
-  bool techniquesChanged = true; // the renderer must instantiate/destroy techniques
+  bool techniquesChanged = true;     // the renderer must instantiate/destroy techniques
 
   DebugViewSettings view;
   CompareSettings compare;
@@ -60,12 +60,12 @@ struct ViewerState {
   int bookmark = -1; // the last bookmark applied
 
   // Measured.
-  long frames = 0;            // frames rendered since start
-  long glErrors = 0;          // GL errors counted over every frame
-  std::vector<PassTiming> passes; // the last frame's passes
-  double frameMs = 0.0;           // the last frame's total, by the timing method
-  std::deque<float> frameHistory; // recent frame totals (ms) for the history graph
-  std::string timingMethod;       // "cpu-finish" | "gpu-query"
+  long frames = 0;                       // frames rendered since start
+  long glErrors = 0;                     // GL errors counted over every frame
+  std::vector<PassTiming> passes;        // the last frame's passes
+  double frameMs = 0.0;                  // the last frame's total, by the timing method
+  std::deque<float> frameHistory;        // recent frame totals (ms) for the history graph
+  std::string timingMethod;              // "cpu-finish" | "gpu-query"
   std::vector<std::string> shaderErrors; // file:line messages of failed (re)compiles
   std::string status;                    // the last action's message for the status line
 

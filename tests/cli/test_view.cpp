@@ -17,7 +17,8 @@ TEST(View, ScreenshotAfterFiveFramesShowsThePanelOverTheFrame) {
   std::vector<std::string> frame = {"--scene", "contact", "-t", "shadow_map"};
   frame.insert(frame.end(), kViewSize.begin(), kViewSize.end());
   std::vector<std::string> view = frame;
-  for (const char* a : {"--frames", "5", "--screenshot"}) view.push_back(a);
+  for (const char* a : {"--frames", "5", "--screenshot"})
+    view.push_back(a);
   view.push_back(shot);
   auto r = runView(view);
   ASSERT_EQ(r.exitCode, 0) << r.err;

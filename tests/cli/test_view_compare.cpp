@@ -40,10 +40,11 @@ TEST(ViewCompare, WipeShowsBothHalvesAndLiveRmseMatchesRtlabCompare) {
   render.insert(render.end(), frame.begin(), frame.end());
   r = runProcess(RTLAB_BINARY, render, 120);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  std::vector<std::string> reference = {"reference", "--aov", "visibility", "--spp", std::to_string(samples),
-                                        "--out", file("reference.exr")};
+  std::vector<std::string> reference = {
+      "reference", "--aov", "visibility", "--spp", std::to_string(samples), "--out", file("reference.exr")};
   reference.insert(reference.end(), frame.begin(), frame.end());
-  reference.erase(std::find(reference.begin(), reference.end(), "-t"), std::find(reference.begin(), reference.end(), "-t") + 2);
+  reference.erase(std::find(reference.begin(), reference.end(), "-t"),
+                  std::find(reference.begin(), reference.end(), "-t") + 2);
   r = runProcess(RTLAB_BINARY, reference, 300);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   r = runProcess(RTLAB_BINARY, {"compare", file("reference.exr"), file("frame.exr"), "--json"});

@@ -77,7 +77,8 @@ TEST(ViewReload, BrokenShaderKeepsRenderingAndReportsFileLineThenRecovers) {
   EXPECT_GE(broken["frames"].get<int>(), before["frames"].get<int>() + phaseFrames);
   const rtlab::Image shot = rtlab::readImage(file("broken.png"));
   double sum = 0;
-  for (float v : shot.pixels) sum += v;
+  for (float v : shot.pixels)
+    sum += v;
   EXPECT_GT(sum / double(shot.pixels.size()), 0.1);
   EXPECT_TRUE(after["shader_errors"].empty()) << after["shader_errors"].dump();
   EXPECT_EQ(after["gl_errors"], 0);

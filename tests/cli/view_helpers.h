@@ -57,7 +57,8 @@ inline double regionDiff(const Image& a, const Image& b, double x0, double x1, d
   std::size_t n = 0;
   for (int y = int(y0 * a.height); y < int(y1 * a.height); ++y)
     for (int x = from; x < to; ++x)
-      for (int c = 0; c < a.channels; ++c, ++n) sum += std::abs(a.at(x, y, c) - b.at(x, y, c));
+      for (int c = 0; c < a.channels; ++c, ++n)
+        sum += std::abs(a.at(x, y, c) - b.at(x, y, c));
   return n ? sum / double(n) : 0.0;
 }
 
@@ -66,7 +67,8 @@ inline Image grayToRgb(const Image& gray) {
   Image rgb(gray.width, gray.height, 3);
   for (int y = 0; y < gray.height; ++y)
     for (int x = 0; x < gray.width; ++x)
-      for (int c = 0; c < 3; ++c) rgb.at(x, y, c) = std::clamp(gray.at(x, y, 0), 0.0f, 1.0f);
+      for (int c = 0; c < 3; ++c)
+        rgb.at(x, y, c) = std::clamp(gray.at(x, y, 0), 0.0f, 1.0f);
   return rgb;
 }
 

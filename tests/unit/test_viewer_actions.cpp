@@ -91,7 +91,8 @@ TEST(ViewerActions, CameraKeysAndInteractiveCameraFollowEachOther) {
   checkCaught(catchError([&] { cameraAction(s, glm::vec3(0, 1, 0), std::nullopt, std::nullopt); }), ExitCode::Usage,
               {"camera.target"});
   EXPECT_EQ(s.params.getVec3("camera.position"), glm::vec3(1, 2, 3));
-  checkCaught(catchError([&] { cameraAction(s, std::nullopt, std::nullopt, 200.0f); }), ExitCode::Usage, {"camera.fov"});
+  checkCaught(catchError([&] { cameraAction(s, std::nullopt, std::nullopt, 200.0f); }), ExitCode::Usage,
+              {"camera.fov"});
   s.camera.orbit(glm::radians(30.0f), 0.0f);
   syncCameraToParams(s);
   EXPECT_EQ(s.params.getVec3("camera.position"), s.camera.camera().position);

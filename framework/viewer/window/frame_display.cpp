@@ -56,7 +56,8 @@ void uploadImage(const Image& image, gl::Texture& texture, const std::string& la
     const int row = image.height - 1 - y; // GL rows are bottom to top
     for (int x = 0; x < image.width; ++x) {
       float* dst = &rgba[(std::size_t(row) * image.width + x) * 4];
-      for (int c = 0; c < 3; ++c) dst[c] = image.at(x, y, image.channels == 1 ? 0 : c);
+      for (int c = 0; c < 3; ++c)
+        dst[c] = image.at(x, y, image.channels == 1 ? 0 : c);
       dst[3] = image.mask.empty() ? 1.0f : image.mask[std::size_t(y) * image.width + x];
     }
   }

@@ -19,7 +19,7 @@ struct DisplaySide {
 };
 
 struct DisplayRequest {
-  DisplaySide a, b;           // b only for the wipe and the difference
+  DisplaySide a, b; // b only for the wipe and the difference
   enum Mode { Single = 0, Wipe = 1, Difference = 2 } mode = Single;
   float min = 0.0f, max = 1.0f; // data range (and the difference's full scale: max - min)
   bool falseColor = false;

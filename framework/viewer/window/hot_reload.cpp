@@ -12,7 +12,8 @@ bool ShaderWatcher::poll(gl::ProgramCache& programs, std::vector<std::string>& e
   // files compile again.
   std::vector<std::string> failed = programs.reloadChanged();
   if (failed != errors) {
-    for (const auto& e : failed) logWarn("shader reload: " + e);
+    for (const auto& e : failed)
+      logWarn("shader reload: " + e);
     if (failed.empty() && !errors.empty()) logInfo("shader reload: every program compiles again");
   }
   errors = std::move(failed);

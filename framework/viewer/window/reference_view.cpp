@@ -48,7 +48,8 @@ void ReferenceView::update(ViewerState& state, Renderer& renderer, unsigned seed
       auto prepared = m_reference.preparedScene();
       if (prepared && m_sceneGeneration == state.sceneGeneration)
         m_reference.start(prepared, scene, renderer.readSurfaces(), aov, options);
-      else m_reference.start(scene, renderer.readSurfaces(), aov, options);
+      else
+        m_reference.start(scene, renderer.readSurfaces(), aov, options);
       m_sceneGeneration = state.sceneGeneration;
       m_active = true;
     } catch (const Error& e) {
@@ -66,10 +67,12 @@ void ReferenceView::update(ViewerState& state, Renderer& renderer, unsigned seed
   // frame or more on a loaded CPU, so they are measured again each time the reference's sample
   // count reaches the next power of two (16, 32, 64, ...), not after every batch.
   int bucket = 0;
-  while ((2 << bucket) <= m_snapshot.samples) ++bucket;
+  while ((2 << bucket) <= m_snapshot.samples)
+    ++bucket;
   std::string metricsKey = std::to_string(m_snapshot.generation) + "/" + std::to_string(bucket) + "/" +
                            std::to_string(state.params.revision());
-  for (const auto& id : state.selection.ordered()) metricsKey += "/" + id;
+  for (const auto& id : state.selection.ordered())
+    metricsKey += "/" + id;
   if (metricsKey == m_metricsKey) return;
   m_metricsKey = metricsKey;
   const LiveMetrics live = computeLiveMetrics(renderer.readAov(aov), m_snapshot);

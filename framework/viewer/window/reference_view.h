@@ -34,9 +34,9 @@ private:
   ProgressiveReference m_reference;
   ProgressiveSnapshot m_snapshot;
   gl::Texture m_texture;
-  std::string m_inputsKey;   // what the running reference was started from
+  std::string m_inputsKey;                // what the running reference was started from
   unsigned long m_sceneGeneration = ~0ul; // the scene the reference's BVH was built for
-  std::string m_metricsKey;  // what the metrics were computed from
+  std::string m_metricsKey;               // what the metrics were computed from
   bool m_active = false;
 };
 

@@ -40,10 +40,12 @@ nlohmann::ordered_json viewerReport(const ViewerState& state, int renderWidth, i
   j["frame_ms"] = state.frameMs;
   std::vector<float> history(state.frameHistory.begin(), state.frameHistory.end());
   std::sort(history.begin(), history.end());
-  j["frame_ms_median"] = history.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(history[history.size() / 2]);
+  j["frame_ms_median"] =
+      history.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(history[history.size() / 2]);
   j["frame_ms_samples"] = history.size();
   auto passes = nlohmann::ordered_json::array();
-  for (const auto& p : state.passes) passes.push_back({{"name", p.pass}, {"technique", p.technique}, {"ms", p.ms}});
+  for (const auto& p : state.passes)
+    passes.push_back({{"name", p.pass}, {"technique", p.technique}, {"ms", p.ms}});
   j["passes"] = passes;
   j["gl_errors"] = state.glErrors;
   j["shader_errors"] = state.shaderErrors;

@@ -3,8 +3,8 @@
 //  "view": {"aov", "mode", "min", "max", "false_color"}, "compare": {"mode", "divider"},
 //  "reference": {"aov", "samples", "running", "rmse", "flip", "metrics_samples", "error"},
 //  "timing", "frame_ms" (the last frame), "frame_ms_median" and "frame_ms_samples" (the frames of
-//  the timings graph: up to 120, since the render size last changed), "passes": [{"name", "technique", "ms"}], "gl_errors",
-//  "shader_errors": ["file:line: ..."], "lecture", "bookmark", "params": {KEY: value}}
+//  the timings graph: up to 120, since the render size last changed), "passes": [{"name", "technique", "ms"}],
+//  "gl_errors", "shader_errors": ["file:line: ..."], "lecture", "bookmark", "params": {KEY: value}}
 // rmse and flip are null until the live metrics have been computed.
 #pragma once
 #include "viewer/viewer_state.h"

@@ -16,7 +16,8 @@ Image readWindow(int width, int height) {
   for (int y = 0; y < height; ++y) {
     const unsigned char* row = &rgb[std::size_t(height - 1 - y) * width * 3]; // GL rows are bottom to top
     for (int x = 0; x < width; ++x)
-      for (int c = 0; c < 3; ++c) image.at(x, y, c) = float(row[x * 3 + c]) / 255.0f;
+      for (int c = 0; c < 3; ++c)
+        image.at(x, y, c) = float(row[x * 3 + c]) / 255.0f;
   }
   return image;
 }

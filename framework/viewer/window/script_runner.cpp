@@ -15,7 +15,7 @@ void ScriptRunner::step(ViewerState& state) {
     if (!reached && std::chrono::steady_clock::now() < m_deadline) return;
     if (!reached)
       logWarn("script: wait_samples timed out at " + std::to_string(state.reference.samples) + " of " +
-                 std::to_string(m_samples) + " spp; continuing");
+              std::to_string(m_samples) + " spp; continuing");
     m_waitingSamples = false;
   }
   while (m_next < m_actions.size()) {
@@ -26,16 +26,20 @@ void ScriptRunner::step(ViewerState& state) {
 }
 
 void ScriptRunner::flushReports() {
-  for (const auto& file : m_pendingReports) m_report(file);
+  for (const auto& file : m_pendingReports)
+    m_report(file);
   m_pendingReports.clear();
 }
 
 bool ScriptRunner::run(const ScriptAction& a, ViewerState& state) {
   const auto& j = a.args;
   const std::string& w = a.where();
-  if (a.action == "technique") selectTechniqueAction(state, j.at("stage"), j.at("id"));
-  else if (a.action == "set") setParamAction(state, j.at("key"), j.at("value"));
-  else if (a.action == "reset") resetParamAction(state, j.at("key"));
+  if (a.action == "technique")
+    selectTechniqueAction(state, j.at("stage"), j.at("id"));
+  else if (a.action == "set")
+    setParamAction(state, j.at("key"), j.at("value"));
+  else if (a.action == "reset")
+    resetParamAction(state, j.at("key"));
   else if (a.action == "camera") {
     auto fov = optionalNumber(j, "fov", w);
     cameraAction(state, optionalVec3(j, "position", w), optionalVec3(j, "target", w),
@@ -44,9 +48,12 @@ bool ScriptRunner::run(const ScriptAction& a, ViewerState& state) {
     state.camera.orbit(glm::radians(float(optionalNumber(j, "yaw", w).value_or(0.0))),
                        glm::radians(float(optionalNumber(j, "pitch", w).value_or(0.0))));
     syncCameraToParams(state);
-  } else if (a.action == "view") viewAction(state, j);
-  else if (a.action == "compare") compareAction(state, j);
-  else if (a.action == "snapshot") state.snapshotRequested = true;
+  } else if (a.action == "view")
+    viewAction(state, j);
+  else if (a.action == "compare")
+    compareAction(state, j);
+  else if (a.action == "snapshot")
+    state.snapshotRequested = true;
   else if (a.action == "wait") {
     m_waitFrames = long(j.at("frames").get<long long>());
     return m_waitFrames == 0;
@@ -59,14 +66,19 @@ bool ScriptRunner::run(const ScriptAction& a, ViewerState& state) {
   } else if (a.action == "screenshot") {
     state.pendingScreenshots.push_back(j.at("file"));
     return false; // the picture of the state so far: render it before going on
-  } else if (a.action == "save_preset") savePresetAction(state, j.at("file"));
-  else if (a.action == "load_preset") loadPresetAction(state, j.at("file"));
+  } else if (a.action == "save_preset")
+    savePresetAction(state, j.at("file"));
+  else if (a.action == "load_preset")
+    loadPresetAction(state, j.at("file"));
   else if (a.action == "report") {
     m_pendingReports.push_back(j.at("file"));
     return false;
-  } else if (a.action == "render_scale") renderScaleAction(state, j.at("value").get<double>());
-  else if (a.action == "lecture") state.lecture = j.at("on").get<bool>();
-  else if (a.action == "bookmark") bookmarkAction(state, int(j.at("index").get<long long>()));
+  } else if (a.action == "render_scale")
+    renderScaleAction(state, j.at("value").get<double>());
+  else if (a.action == "lecture")
+    state.lecture = j.at("on").get<bool>();
+  else if (a.action == "bookmark")
+    bookmarkAction(state, int(j.at("index").get<long long>()));
   else if (a.action == "quit") {
     state.quit = true;
     return false;

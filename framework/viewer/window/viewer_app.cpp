@@ -7,11 +7,11 @@
 #include "ui/panels.h"
 #include "util/error.h"
 #include "util/log.h"
+#include "viewer/viewer_actions.h"
 #include "viewer/window/hot_reload.h"
 #include "viewer/window/report.h"
 #include "viewer/window/screenshot.h"
 #include "viewer/window/script_runner.h"
-#include "viewer/viewer_actions.h"
 #include "viewer/window/viewer_frame.h"
 #include "viewer/window/viewer_input.h"
 
@@ -31,7 +31,8 @@ namespace {
 std::vector<std::string> g_dropped; // files dropped onto the window since the last frame
 
 void onDrop(GLFWwindow*, int count, const char** paths) {
-  for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
+  for (int i = 0; i < count; ++i)
+    g_dropped.emplace_back(paths[i]);
 }
 
 // ImGui's context and backends for one window, shut down in reverse order.
@@ -61,7 +62,8 @@ void initState(ViewerState& state, ViewerOptions& options) {
   state.sceneSpec = f.options.sceneSpec;
   state.scene = f.scene;
   state.params = f.params;
-  for (const auto& id : f.techniques) state.selection.activate(id);
+  for (const auto& id : f.techniques)
+    state.selection.activate(id);
   state.camera.setHome(state.scene.camera);
   syncCameraFromParams(state); // --set camera.* wins over the scene's camera
   state.camera.setHome(state.camera.camera());
@@ -102,7 +104,8 @@ int runViewer(ViewerOptions options) {
       continue;
     }
     watcher.poll(frame.programs(), state.shaderErrors);
-    for (const auto& path : g_dropped) runGuarded(state, [&] { loadSceneAction(state, path); });
+    for (const auto& path : g_dropped)
+      runGuarded(state, [&] { loadSceneAction(state, path); });
     g_dropped.clear();
 
     useLectureFont(imgui.fonts, state.lecture);

@@ -14,9 +14,9 @@ namespace rtlab {
 
 struct ViewerOptions {
   ResolvedFrame frame;
-  std::string screenshot;                 // --screenshot: after frame.options.frames frames, then exit
+  std::string screenshot;                          // --screenshot: after frame.options.frames frames, then exit
   std::optional<std::vector<ScriptAction>> script; // --script, validated
-  std::vector<Bookmark> bookmarks;        // --bookmarks, validated
+  std::vector<Bookmark> bookmarks;                 // --bookmarks, validated
   std::string bookmarksSource;
 };
 

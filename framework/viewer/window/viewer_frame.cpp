@@ -37,9 +37,11 @@ void ViewerFrame::recordTimings(ViewerState& state) {
   state.timingMethod = timingName(m_timer.method());
   state.frameMs = m_timer.frameMs();
   state.passes.clear();
-  for (const auto& s : m_timer.frameSamples()) state.passes.push_back({s.pass, s.technique, s.ms});
+  for (const auto& s : m_timer.frameSamples())
+    state.passes.push_back({s.pass, s.technique, s.ms});
   state.frameHistory.push_back(float(state.frameMs));
-  while (state.frameHistory.size() > kHistory) state.frameHistory.pop_front();
+  while (state.frameHistory.size() > kHistory)
+    state.frameHistory.pop_front();
 }
 
 void ViewerFrame::render(ViewerState& state, int windowWidth, int windowHeight, bool referenceWanted, unsigned seed) {
@@ -56,8 +58,8 @@ void ViewerFrame::render(ViewerState& state, int windowWidth, int windowHeight, 
   if (width != m_width || height != m_height) state.frameHistory.clear(); // the graph is per render size
   m_width = width;
   m_height = height;
-  bool reference = referenceWanted || state.compare.mode == CompareMode::Reference ||
-                         state.compare.mode == CompareMode::Difference;
+  bool reference =
+      referenceWanted || state.compare.mode == CompareMode::Reference || state.compare.mode == CompareMode::Difference;
   const std::string referenceAov = referenceAovFor(state);
   try {
     m_renderer.render(state.params, m_width, m_height, outputsFor(state, reference, referenceAov), m_timer);
@@ -74,8 +76,10 @@ void ViewerFrame::render(ViewerState& state, int windowWidth, int windowHeight, 
   }
   state.glErrors += drainGlErrors();
   if (state.view.autoRangeRequested && m_rendered) autoRange(state);
-  if (reference && m_rendered) m_reference.update(state, m_renderer, seed, m_width, m_height);
-  else m_reference.stop(state);
+  if (reference && m_rendered)
+    m_reference.update(state, m_renderer, seed, m_width, m_height);
+  else
+    m_reference.stop(state);
   draw(state, windowWidth, windowHeight, referenceAov);
   state.glErrors += drainGlErrors();
 }
@@ -142,7 +146,8 @@ void ViewerFrame::draw(ViewerState& state, int windowWidth, int windowHeight, co
     r.b = m_snapshotSide;
     r.mode = DisplayRequest::Wipe;
     break;
-  case CompareMode::Off: break;
+  case CompareMode::Off:
+    break;
   }
   m_display.draw(r);
   if (v.mode == DebugMode::Pip && state.compare.mode == CompareMode::Off) {

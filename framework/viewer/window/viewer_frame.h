@@ -4,9 +4,9 @@
 #pragma once
 #include "frame/pass_timer.h"
 #include "frame/renderer.h"
+#include "viewer/viewer_state.h"
 #include "viewer/window/frame_display.h"
 #include "viewer/window/reference_view.h"
-#include "viewer/viewer_state.h"
 
 namespace rtlab {
 

@@ -11,7 +11,9 @@
 namespace rtlab {
 namespace {
 
-bool keyPressed(int key) { return ImGui::IsKeyPressed(key, false); }
+bool keyPressed(int key) {
+  return ImGui::IsKeyPressed(key, false);
+}
 
 void stepBookmark(ViewerState& state, int delta) {
   if (state.bookmarks.empty()) {
