@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "fake_technique.h"
 #include "test_util.h"
 
 using namespace rtlab;
@@ -18,24 +19,15 @@ using rtlab::test::checkCaught;
 
 namespace {
 
-TechniqueEntry fake(const std::string& id, const std::string& stage, std::vector<ParamSpec> params,
-                    std::vector<DebugView> views = {}) {
-  TechniqueEntry e;
-  e.info.id = id;
-  e.info.stage = stage;
-  e.info.title = id;
-  e.info.params = std::move(params);
-  e.info.debugViews = std::move(views);
-  e.create = [] { return std::unique_ptr<Technique>(); }; // never called
-  return e;
-}
+using rtlab::test::fakeTechnique;
 
 const TechniqueRegistry& registry() {
   static const TechniqueRegistry r = [] {
     TechniqueRegistry t;
-    t.add(fake("hard", "shadow", {ParamSpec::integer("hard.samples", "Samples", 16, 1, 64)}, {{"hard.depth", 1, ""}}));
-    t.add(fake("soft", "shadow", {ParamSpec::real("soft.width", "Width", 1.0, 0.0, 8.0)}));
-    t.add(fake("occ", "ao", {ParamSpec::real("occ.strength", "Strength", 0.5, 0.0, 2.0)}));
+    t.add(fakeTechnique("hard", "shadow", {ParamSpec::integer("hard.samples", "Samples", 16, 1, 64)},
+                        {{"hard.depth", 1, ""}}));
+    t.add(fakeTechnique("soft", "shadow", {ParamSpec::real("soft.width", "Width", 1.0, 0.0, 8.0)}));
+    t.add(fakeTechnique("occ", "ao", {ParamSpec::real("occ.strength", "Strength", 0.5, 0.0, 2.0)}));
     return t;
   }();
   return r;

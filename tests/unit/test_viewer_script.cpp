@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "fake_technique.h"
 #include "test_util.h"
 
 #include <string>
@@ -33,22 +34,13 @@ Caught parseSecond(const std::string& action) {
   return catchError([&] { parseScript("[{\"action\": \"snapshot\"}, " + action + "]", "demo.json"); });
 }
 
-TechniqueEntry fake(const std::string& id, const std::string& stage, std::vector<ParamSpec> params,
-                    std::vector<DebugView> views = {}) {
-  TechniqueEntry e;
-  e.info.id = id;
-  e.info.stage = stage;
-  e.info.title = id;
-  e.info.params = std::move(params);
-  e.info.debugViews = std::move(views);
-  e.create = [] { return std::unique_ptr<Technique>(); }; // never called
-  return e;
-}
+using rtlab::test::fakeTechnique;
 
 TechniqueRegistry registry() {
   TechniqueRegistry r;
-  r.add(fake("sh", "shadow", {ParamSpec::integer("sh.samples", "Samples", 16, 1, 64)}, {{"sh.kernel", 1, ""}}));
-  r.add(fake("occ", "ao", {ParamSpec::real("occ.radius", "Radius", 0.5, 0.0, 2.0)}));
+  r.add(
+      fakeTechnique("sh", "shadow", {ParamSpec::integer("sh.samples", "Samples", 16, 1, 64)}, {{"sh.kernel", 1, ""}}));
+  r.add(fakeTechnique("occ", "ao", {ParamSpec::real("occ.radius", "Radius", 0.5, 0.0, 2.0)}));
   return r;
 }
 
