@@ -29,21 +29,29 @@ std::string numberFormat(const ParamSpec& spec) {
   return f;
 }
 
+// The widgets work in float: a slider at its end gives float(max), which may lie just outside the
+// double range; that rounding is undone. A value typed beyond the range (Ctrl+click) is passed on
+// as typed, so the action rejects it with the key's range in the status line (no silent clamp).
+double fromWidget(double v, const ParamSpec& spec) {
+  if (v > spec.max && float(v) == float(spec.max)) return spec.max;
+  if (v < spec.min && float(v) == float(spec.min)) return spec.min;
+  return v;
+}
+
 bool drawValue(const ParamSpec& spec, ParamValue& value, const char* id) {
-  const ImGuiSliderFlags flags =
-      ImGuiSliderFlags_AlwaysClamp | (spec.scale == ParamScale::Log ? ImGuiSliderFlags_Logarithmic : 0);
+  const ImGuiSliderFlags flags = spec.scale == ParamScale::Log ? ImGuiSliderFlags_Logarithmic : 0;
   switch (spec.type) {
   case ParamType::Float: {
     float v = float(value.v[0]);
     const bool changed =
         ImGui::SliderFloat(id, &v, float(spec.min), float(spec.max), numberFormat(spec).c_str(), flags);
-    if (changed) value.v[0] = std::clamp(double(v), spec.min, spec.max);
+    if (changed) value.v[0] = fromWidget(double(v), spec);
     return changed;
   }
   case ParamType::Int: {
     int v = int(value.v[0]);
     const bool changed = ImGui::SliderInt(id, &v, int(spec.min), int(spec.max), numberFormat(spec).c_str(), flags);
-    if (changed) value.v[0] = std::clamp(double(v), spec.min, spec.max);
+    if (changed) value.v[0] = fromWidget(double(v), spec);
     return changed;
   }
   case ParamType::Bool: {
@@ -73,7 +81,7 @@ bool drawValue(const ParamSpec& spec, ParamValue& value, const char* id) {
                              : ImGui::DragFloat3(id, v, 0.01f, float(spec.min), float(spec.max), "%.3f", flags);
     if (changed)
       for (int c = 0; c < 3; ++c)
-        value.v[std::size_t(c)] = std::clamp(double(v[c]), spec.min, spec.max);
+        value.v[std::size_t(c)] = fromWidget(double(v[c]), spec);
     return changed;
   }
   }

@@ -64,7 +64,7 @@ void drawComparePanel(ViewerState& state) {
   modeRadios(c.mode, {{"off", CompareMode::Off}, {"reference", CompareMode::Reference}});
   modeRadios(c.mode, {{"snapshot", CompareMode::Snapshot}, {"difference", CompareMode::Difference}});
   ImGui::SliderFloat("divider", &c.divider, 0.0f, 1.0f, "%.2f");
-  helpMarker("Drag the divider here or with the middle of the picture while holding Ctrl.");
+  helpMarker("Drag the divider here, or Ctrl + left drag on the picture.");
   if (ImGui::Button("Take snapshot")) state.snapshotRequested = true;
   helpMarker("Freezes the current picture as the right side of the snapshot wipe.");
   const auto& r = state.reference;

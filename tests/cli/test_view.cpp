@@ -66,3 +66,27 @@ TEST(View, QuitActionExitsZeroWithoutGlErrors) {
   EXPECT_EQ(report["gl_errors"], 0);
   EXPECT_TRUE(report["shader_errors"].empty());
 }
+
+// Scripts and bookmarks are checked before the window opens, so a bad file fails the same way with
+// or without a display (here: without), and nothing is run.
+TEST(View, BadScriptOrBookmarksFailBeforeTheWindowOpens) {
+  const fs::path dir = freshTestDir("view");
+  std::ofstream(dir / "bad_action.json") << R"([{"action": "fly"}])";
+  std::ofstream(dir / "bad_value.json") << R"([{"action": "set", "key": "pcf.radius", "value": 99}])";
+  std::ofstream(dir / "bookmarks.json") << R"({"schema": 1, "bookmarks": [{"name": "x", "techniques": ["nope"]}]})";
+  auto view = [&](std::vector<std::string> args) {
+    args.insert(args.begin(), {"-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", RTLAB_BINARY, "view"});
+    return runProcess("/usr/bin/env", args);
+  };
+  auto r = view({"--script", (dir / "missing.json").string()});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  r = view({"--script", (dir / "bad_action.json").string()});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_NE(r.err.find("fly"), std::string::npos) << r.err;
+  r = view({"--script", (dir / "bad_value.json").string()});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("pcf.radius"), std::string::npos) << r.err;
+  r = view({"--bookmarks", (dir / "bookmarks.json").string()});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("nope"), std::string::npos) << r.err;
+}

@@ -5,6 +5,9 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -71,7 +74,7 @@ InputResult handleViewerInput(GLFWwindow* window, ViewerState& state, float dt, 
     in.fly = {axis(GLFW_KEY_D, GLFW_KEY_A), axis(GLFW_KEY_E, GLFW_KEY_Q), axis(GLFW_KEY_W, GLFW_KEY_S)};
     in.fast = io.KeyShift;
   }
-  if (in.mouseDelta.x != in.mouseDelta.x) in.mouseDelta = glm::vec2(0); // ImGui's "no previous position"
+  if (!std::isfinite(in.mouseDelta.x) || !std::isfinite(in.mouseDelta.y)) in.mouseDelta = glm::vec2(0);
   if (state.camera.update(in)) syncCameraToParams(state);
   return result;
 }
