@@ -130,6 +130,15 @@ Program& Program::set(const std::string& n, const std::vector<glm::vec2>& v) {
   return *this;
 }
 
+std::vector<std::filesystem::file_time_type> Program::sourceTimesNow() const {
+  std::vector<std::filesystem::file_time_type> times;
+  for (const auto& [path, time] : m_sources) {
+    std::error_code ec;
+    times.push_back(std::filesystem::last_write_time(path, ec));
+  }
+  return times;
+}
+
 bool Program::sourcesChanged() const {
   for (const auto& [path, time] : m_sources) {
     std::error_code ec;

@@ -44,6 +44,8 @@ public:
 
   // Files this program was built from (includes too) with their modification times, for reload.
   bool sourcesChanged() const;
+  // The files' modification times on disk now, in the order they were recorded.
+  std::vector<std::filesystem::file_time_type> sourceTimesNow() const;
 
 private:
   ProgramDesc m_desc;
