@@ -85,6 +85,7 @@ int runViewer(ViewerOptions options) {
   initState(state, options);
   ViewerFrame frame(registry, resolveTiming(f.options.timing, context->info().software));
   ShaderWatcher watcher;
+  std::vector<std::string> reloadErrors; // programs whose rebuild failed (the last good one runs)
   std::unique_ptr<ScriptRunner> script;
   if (options.script)
     script = std::make_unique<ScriptRunner>(std::move(*options.script), [&](const std::string& path) {
@@ -103,7 +104,7 @@ int runViewer(ViewerOptions options) {
       glfwWaitEventsTimeout(0.1);
       continue;
     }
-    watcher.poll(frame.programs(), state.shaderErrors);
+    watcher.poll(frame.programs(), reloadErrors);
     for (const auto& path : g_dropped)
       runGuarded(state, [&] { loadSceneAction(state, path); });
     g_dropped.clear();
@@ -116,6 +117,8 @@ int runViewer(ViewerOptions options) {
     if (script) script->step(state);
 
     frame.render(state, w, h, script && script->wantsReference(), f.options.seed);
+    state.shaderErrors = reloadErrors;
+    if (!frame.shaderError().empty()) state.shaderErrors.push_back(frame.shaderError());
     if (showPanel) drawViewerPanel(state);
     drawInfoOverlay(state, frame.renderWidth(), frame.renderHeight());
     drawLectureCaption(state);

@@ -6,6 +6,7 @@
 #include "util/error.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace rtlab {
@@ -61,19 +62,23 @@ void ViewerFrame::render(ViewerState& state, int windowWidth, int windowHeight, 
   bool reference =
       referenceWanted || state.compare.mode == CompareMode::Reference || state.compare.mode == CompareMode::Difference;
   const std::string referenceAov = referenceAovFor(state);
-  try {
-    m_renderer.render(state.params, m_width, m_height, outputsFor(state, reference, referenceAov), m_timer);
-    m_rendered = true;
-    recordTimings(state);
-    ++state.frames;
-  } catch (const Error& e) {
-    // A program that never compiled (its technique was switched on while its file is broken):
-    // the last picture stays, the message is shown until the file compiles.
-    if (e.code() != ExitCode::Shader) throw;
-    if (std::find(state.shaderErrors.begin(), state.shaderErrors.end(), e.what()) == state.shaderErrors.end())
-      state.shaderErrors.push_back(e.what());
-    reference = false;
+  const auto now = std::chrono::steady_clock::now();
+  if (m_shaderError.empty() || now >= m_retryAt) {
+    try {
+      m_renderer.render(state.params, m_width, m_height, outputsFor(state, reference, referenceAov), m_timer);
+      m_rendered = true;
+      m_shaderError.clear();
+      recordTimings(state);
+      ++state.frames;
+    } catch (const Error& e) {
+      // A program that never compiled (its technique was switched on while its file is broken):
+      // the last picture stays and the message is shown; compiling is tried again twice a second.
+      if (e.code() != ExitCode::Shader) throw;
+      m_shaderError = e.what();
+      m_retryAt = now + std::chrono::milliseconds(500);
+    }
   }
+  if (!m_shaderError.empty()) reference = false;
   state.glErrors += drainGlErrors();
   if (state.view.autoRangeRequested && m_rendered) autoRange(state);
   if (reference && m_rendered)

@@ -5,8 +5,11 @@
 #include "frame/pass_timer.h"
 #include "frame/renderer.h"
 #include "viewer/viewer_state.h"
+
 #include "viewer/window/frame_display.h"
 #include "viewer/window/reference_view.h"
+#include <chrono>
+#include <string>
 
 namespace rtlab {
 
@@ -18,6 +21,9 @@ public:
   // `referenceWanted`: keep the progressive reference running even when compare mode is off
   // (a script waiting for samples).
   void render(ViewerState& state, int windowWidth, int windowHeight, bool referenceWanted, unsigned seed);
+  // The message of a program that failed to compile on first use (empty when the last frame
+  // rendered); programs that compiled once are hot-reloaded instead (hot_reload.h).
+  const std::string& shaderError() const { return m_shaderError; }
   int renderWidth() const { return m_width; }
   int renderHeight() const { return m_height; }
   gl::ProgramCache& programs() { return m_renderer.programs(); }
@@ -39,6 +45,8 @@ private:
   DisplaySide m_snapshotSide;
   bool m_rendered = false; // a frame has been rendered (the pool holds its textures)
   int m_width = 0, m_height = 0;
+  std::string m_shaderError;
+  std::chrono::steady_clock::time_point m_retryAt;
 };
 
 } // namespace rtlab
