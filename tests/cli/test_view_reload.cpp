@@ -24,20 +24,33 @@ bool waitFor(const fs::path& path, double seconds) {
   return true;
 }
 
+// A copy of shaders/ under dir/data, for RTLAB_DATA_DIR; returns dir/data.
+fs::path copyShaders(const fs::path& dir) {
+  const fs::path data = dir / "data";
+  fs::create_directories(data);
+  fs::copy(fs::path(RTLAB_SOURCE_DIR) / "shaders", data / "shaders", fs::copy_options::recursive);
+  return data;
+}
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The file with a syntax error inserted as its line 3.
+void breakLine3(const fs::path& path, const std::string& good) {
+  const std::size_t line3 = good.find('\n', good.find('\n') + 1) + 1;
+  std::ofstream(path) << good.substr(0, line3) + "this is not GLSL;\n" + good.substr(line3);
+}
+
 } // namespace
 
 TEST(ViewReload, BrokenShaderKeepsRenderingAndReportsFileLineThenRecovers) {
   ASSERT_TRUE(fs::exists(kXvfbRun)) << "install xvfb (scripts/setup.sh --test-deps)";
   const fs::path dir = freshTestDir("view");
-  const fs::path data = dir / "data";
-  fs::create_directories(data);
-  fs::copy(fs::path(RTLAB_SOURCE_DIR) / "shaders", data / "shaders", fs::copy_options::recursive);
+  const fs::path data = copyShaders(dir);
   const fs::path shader = data / "shaders" / "shading" / "tonemap.frag";
-  std::string good;
-  {
-    std::ifstream in(shader);
-    good.assign(std::istreambuf_iterator<char>(in), {});
-  }
+  const std::string good = readText(shader);
   auto file = [&](const char* name) { return (dir / name).string(); };
   // Frames between the phases: enough for several reload polls (every 0.25 s) at a few ms per
   // frame; the test edits the file as soon as a phase's report appears.
@@ -58,9 +71,7 @@ TEST(ViewReload, BrokenShaderKeepsRenderingAndReportsFileLineThenRecovers) {
   std::thread viewer([&] { result = runView(args, {"RTLAB_DATA_DIR=" + data.string()}); });
 
   const bool started = waitFor(dir / "before.json", 60);
-  // Line 3 of the file becomes a syntax error.
-  const std::size_t line3 = good.find('\n', good.find('\n') + 1) + 1;
-  std::ofstream(shader) << good.substr(0, line3) + "this is not GLSL;\n" + good.substr(line3);
+  breakLine3(shader, good);
   const bool broke = waitFor(dir / "broken.json", 60);
   std::ofstream(shader) << good; // restored
   viewer.join();
@@ -82,4 +93,35 @@ TEST(ViewReload, BrokenShaderKeepsRenderingAndReportsFileLineThenRecovers) {
   EXPECT_GT(sum / double(shot.pixels.size()), 0.1);
   EXPECT_TRUE(after["shader_errors"].empty()) << after["shader_errors"].dump();
   EXPECT_EQ(after["gl_errors"], 0);
+}
+
+// A technique switched on while its shader is broken: its program never compiled, so there is no
+// last good one. The viewer reports the file:line, keeps showing the last picture, and goes on.
+TEST(ViewReload, TechniqueWithABrokenShaderReportsItAndKeepsTheLastPicture) {
+  ASSERT_TRUE(fs::exists(kXvfbRun)) << "install xvfb (scripts/setup.sh --test-deps)";
+  const fs::path dir = freshTestDir("view");
+  const fs::path data = copyShaders(dir);
+  const fs::path shader = data / "shaders" / "pcf" / "visibility.frag";
+  breakLine3(shader, readText(shader));
+  auto file = [&](const char* name) { return (dir / name).string(); };
+  const nlohmann::json script = {{{"action", "wait"}, {"frames", 3}},
+                                 {{"action", "screenshot"}, {"file", file("before.png")}},
+                                 {{"action", "technique"}, {"stage", "shadow"}, {"id", "pcf"}},
+                                 {{"action", "wait"}, {"frames", 5}},
+                                 {{"action", "screenshot"}, {"file", file("broken.png")}},
+                                 {{"action", "report"}, {"file", file("report.json")}},
+                                 {{"action", "quit"}}};
+  std::vector<std::string> args = kViewSize;
+  args.push_back("--script");
+  args.push_back(writeScript(dir / "script.json", script));
+  const auto r = runView(args, {"RTLAB_DATA_DIR=" + data.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto report = readJson(dir / "report.json");
+  ASSERT_EQ(report["shader_errors"].size(), 1u) << report["shader_errors"].dump();
+  const std::string message = report["shader_errors"][0];
+  EXPECT_NE(message.find("pcf/visibility.frag:3"), std::string::npos) << message;
+  EXPECT_EQ(report["gl_errors"], 0);
+  // The picture right of the panel is the last one rendered (no shadow technique), not black.
+  EXPECT_LT(regionDiff(rtlab::readImage(file("broken.png")), rtlab::readImage(file("before.png")), 0.5, 1.0),
+            0.5 / 255.0);
 }
