@@ -28,11 +28,13 @@
 namespace rtlab {
 namespace {
 
-std::vector<std::string> g_dropped; // files dropped onto the window since the last frame
+// Files dropped onto the window since the last frame; the window's user pointer points at it.
+using DroppedFiles = std::vector<std::string>;
 
-void onDrop(GLFWwindow*, int count, const char** paths) {
+void onDrop(GLFWwindow* window, int count, const char** paths) {
+  auto* dropped = static_cast<DroppedFiles*>(glfwGetWindowUserPointer(window));
   for (int i = 0; i < count; ++i)
-    g_dropped.emplace_back(paths[i]);
+    dropped->emplace_back(paths[i]);
 }
 
 // ImGui's context and backends for one window, shut down in reverse order.
@@ -77,6 +79,8 @@ int runViewer(ViewerOptions options) {
   const ResolvedFrame& f = options.frame;
   auto context = createWindowContext(f.options.width, f.options.height, "rtlab view — " + f.scene.name);
   GLFWwindow* window = context->window();
+  DroppedFiles dropped;
+  glfwSetWindowUserPointer(window, &dropped);
   glfwSetDropCallback(window, onDrop); // before ImGui, which chains the callbacks it replaces
   ImGuiSession imgui(window);
   const TechniqueRegistry& registry = TechniqueRegistry::instance();
@@ -105,9 +109,9 @@ int runViewer(ViewerOptions options) {
       continue;
     }
     watcher.poll(frame.programs(), reloadErrors);
-    for (const auto& path : g_dropped)
+    for (const auto& path : dropped)
       runGuarded(state, [&] { loadSceneAction(state, path); });
-    g_dropped.clear();
+    dropped.clear();
 
     useLectureFont(imgui.fonts, state.lecture);
     ImGui_ImplOpenGL3_NewFrame();
