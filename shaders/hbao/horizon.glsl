@@ -24,6 +24,7 @@ struct Slice {
   vec3 v, d;     // unit view vector and in-slice tangent (d perpendicular to v)
   float n;       // angle of the projected normal from v, towards d
   float np;      // length of the projected normal
+  float cosN, sinN;
   float lo, hi;  // the hemisphere's part of this half-slice: theta in [lo, hi]
 };
 
@@ -35,6 +36,8 @@ Slice makeSlice(vec3 v, vec3 normal, vec3 tangent) {
   float nv = dot(normal, v), nd = dot(normal, s.d);
   s.np = sqrt(nv * nv + nd * nd);
   s.n = s.np > 1e-6 ? atan(nd, nv) : 0.0;
+  s.cosN = cos(s.n);
+  s.sinN = sin(s.n);
   s.lo = max(0.0, s.n - kHalfPi);
   s.hi = min(kPi, s.n + kHalfPi);
   return s;
@@ -43,7 +46,7 @@ Slice makeSlice(vec3 v, vec3 normal, vec3 tangent) {
 // The slice measure of the directions from lo up to theta (increasing in theta).
 float sliceMeasure(Slice s, float theta) {
 #if HBAO_INTEGRAL == 1
-  return 0.25 * s.np * (cos(s.n) - cos(2.0 * theta - s.n) + 2.0 * theta * sin(s.n));
+  return 0.25 * s.np * (s.cosN - cos(2.0 * theta - s.n) + 2.0 * theta * s.sinN);
 #else
   return -cos(theta);
 #endif

@@ -94,6 +94,7 @@ March marchDirection(Center c, vec2 dir, float offset, ivec2 watch) {
   if (s.hi <= s.lo) return m;
   m.open = sliceMeasure(s, s.hi) - sliceMeasure(s, s.lo);
   float horizon = s.hi - uAngleBias;  // taps must rise above the biased tangent plane
+  float horizonMeasure = sliceMeasure(s, max(horizon, s.lo));
   if (c.radiusPx < 1.0) return m;     // the whole radius lies within this pixel
   float r2 = uRadius * uRadius;
   for (int i = 0; i < uSteps; ++i) {
@@ -108,9 +109,10 @@ March marchDirection(Center c, vec2 dir, float offset, ivec2 watch) {
         status = kTapBelow;
         float theta = max(tapAngle(s, offsetWorld), s.lo);
         if (theta < horizon) {
-          float weight = 1.0 - uAttenuation * d2 / r2;
-          m.occlusion += weight * (sliceMeasure(s, max(horizon, s.lo)) - sliceMeasure(s, theta));
+          float measure = sliceMeasure(s, theta);
+          m.occlusion += (1.0 - uAttenuation * d2 / r2) * (horizonMeasure - measure);
           horizon = theta;
+          horizonMeasure = measure;
           status = kTapRaised;
         }
       }
