@@ -49,8 +49,15 @@ float aoEvaluate(ivec2 px, AoSurface s) {
     Slice sl = makeSlice(v, s.n, vec3(dir, 0.0));
     if (sl.hi <= sl.lo) continue;
     open += sliceMeasure(sl, sl.hi) - sliceMeasure(sl, sl.lo);
-    float horizon = sl.hi - uAngleBias;  // taps must rise above the biased tangent plane
+    // A tap occludes only once it rises uAngleBias above the tangent plane. Cosine: the bias is a
+    // threshold, and the first tap above it occludes from the tangent plane up, so a real
+    // occluder loses nothing; solid angle: Bavoil's offset tangent t + bias.
+    float horizon = sl.hi - uAngleBias;
+#if HBAO_INTEGRAL == 1
+    float horizonMeasure = sliceMeasure(sl, sl.hi);
+#else
     float horizonMeasure = sliceMeasure(sl, max(horizon, sl.lo));
+#endif
     for (int i = 0; i < uSteps; ++i) {
       vec2 q = centre + dir * (firstPx + (float(i) + offset) * stepPx);
       if (any(lessThan(q, vec2(0.0))) || any(greaterThanEqual(q, vec2(uFullSize)))) break; // off-screen
