@@ -12,21 +12,26 @@ uniform int uDirections;
 uniform int uSteps;
 uniform float uMaxRadiusPx;  // frame pixels
 uniform float uAngleBias;    // radians
+uniform vec2 uBiasCosSin;    // cos and sin of uAngleBias
 uniform float uAttenuation;  // W(r) = 1 - uAttenuation r^2 / R^2
 uniform bool uJitter;        // per-pixel rotation of the directions and offset of the taps
 
-// The surface point seen through frame point q (frame pixels, continuous), on the plane of the
-// AO texel that holds q (its stored depth and normal): exact on planar surfaces, so the taps lie
-// on the direction's line rather than at texel centres up to half a texel off it, which on
-// surfaces seen at grazing angles would tilt them tens of degrees out of the tangent plane.
-// Where the ray nearly grazes that plane the texel's own point is used.
+// View-space point at linear depth 1 seen through frame point q (frame pixels, continuous), for
+// the symmetric perspective of FrameView (what aoViewPosition computes with the inverse
+// projection, in two multiply-adds).
+vec3 viewRay(vec2 q) { return vec3((2.0 * q / vec2(uFullSize) - 1.0) / vec2(uProj[0][0], uProj[1][1]), -1.0); }
+
+// The surface point seen through frame point q, on the plane of the AO texel that holds q (its
+// stored depth and normal): exact on planar surfaces, so the taps lie on the direction's line
+// rather than at texel centres up to half a texel off it, which on surfaces seen at grazing
+// angles would tilt them tens of degrees out of the tangent plane. Where the ray nearly grazes
+// that plane the texel's own point is used.
 vec3 surfaceThrough(vec2 q, ivec2 tap, vec4 texel) {
-  vec3 stored = aoViewPosition(aoFullPixel(tap), texel.w);
-  vec3 n = texel.xyz;
-  vec3 ray = aoViewPosition(q, 1.0);
-  float denom = dot(ray, n);
+  vec3 stored = viewRay(aoFullPixel(tap)) * texel.w;
+  vec3 ray = viewRay(q);
+  float denom = dot(ray, texel.xyz);
   if (abs(denom) < 1e-2 * length(ray)) return stored;
-  return ray * (dot(stored, n) / denom);
+  return ray * (dot(stored, texel.xyz) / denom);
 }
 
 float aoEvaluate(ivec2 px, AoSurface s) {
@@ -43,20 +48,28 @@ float aoEvaluate(ivec2 px, AoSurface s) {
   vec3 v = normalize(-s.p);
   float r2 = uRadius * uRadius;
   float occlusion = 0.0, open = 0.0;
-  for (int k = 0; k < uDirections; ++k) {
-    float phi = (float(k) + rotation) * (2.0 * kPi / float(uDirections));
-    vec2 dir = vec2(cos(phi), sin(phi));
+  // Directions 2 pi (k + rotation) / N, turned from one to the next by a fixed rotation.
+  float phi = rotation * (2.0 * kPi / float(uDirections));
+  vec2 dir = vec2(cos(phi), sin(phi));
+  float stepAngle = 2.0 * kPi / float(uDirections);
+  mat2 turn = mat2(cos(stepAngle), sin(stepAngle), -sin(stepAngle), cos(stepAngle));
+  for (int k = 0; k < uDirections; ++k, dir = turn * dir) {
     Slice sl = makeSlice(v, s.n, vec3(dir, 0.0));
-    if (sl.hi <= sl.lo) continue;
-    open += sliceMeasure(sl, sl.hi) - sliceMeasure(sl, sl.lo);
+    if (sl.hi.a <= sl.lo.a) continue;
+    float hiMeasure = sliceMeasure(sl, sl.hi);
+    open += hiMeasure - sliceMeasure(sl, sl.lo);
     // A tap occludes only once it rises uAngleBias above the tangent plane. Cosine: the bias is a
     // threshold, and the first tap above it occludes from the tangent plane up, so a real
     // occluder loses nothing; solid angle: Bavoil's offset tangent t + bias.
-    float horizon = sl.hi - uAngleBias;
+    Angle horizon = sl.lo;
+    if (sl.hi.a - uAngleBias > sl.lo.a)
+      horizon = Angle(sl.hi.a - uAngleBias, sl.hi.c * uBiasCosSin.x + sl.hi.s * uBiasCosSin.y,
+                      sl.hi.s * uBiasCosSin.x - sl.hi.c * uBiasCosSin.y);
+    float horizonCos = horizon.c;
 #if HBAO_INTEGRAL == 1
-    float horizonMeasure = sliceMeasure(sl, sl.hi);
+    float horizonMeasure = hiMeasure;
 #else
-    float horizonMeasure = sliceMeasure(sl, max(horizon, sl.lo));
+    float horizonMeasure = sliceMeasure(sl, horizon);
 #endif
     for (int i = 0; i < uSteps; ++i) {
       vec2 q = centre + dir * (firstPx + (float(i) + offset) * stepPx);
@@ -67,11 +80,11 @@ float aoEvaluate(ivec2 px, AoSurface s) {
       if (texel.w > 0.0 && tap != px) {  // sky (depth 0) never occludes
         vec3 offsetView = surfaceThrough(q, tap, texel) - s.p;
         float d2 = dot(offsetView, offsetView);
-        float theta = max(tapAngle(sl, offsetView), sl.lo);
-        if (d2 <= r2 && theta < horizon) {
-          float measure = sliceMeasure(sl, theta);
+        float c = min(tapCos(sl, offsetView), sl.lo.c);  // the tap's angle, at least lo
+        if (d2 <= r2 && c > horizonCos) {
+          float measure = sliceMeasure(sl, angleOf(c));
           occlusion += (1.0 - uAttenuation * d2 / r2) * (horizonMeasure - measure);
-          horizon = theta;
+          horizonCos = c;
           horizonMeasure = measure;
           raised = 1.0;
         }

@@ -13,19 +13,26 @@
 //    measured from the plane perpendicular to V.
 // Each tap that raises the horizon adds W(r) (measure(old) - measure(new)), W(r) = 1 -
 // attenuation * r^2 / R^2 (Bavoil's per-sample attenuation), so with attenuation 0 the sum is
-// the measure between the horizon and the biased tangent plane.
+// the measure between the highest horizon and the tangent plane (cosine) or the tangent plane
+// raised by the angle bias (solid angle, Bavoil's t + bias).
 #ifndef HBAO_INTEGRAL
 #define HBAO_INTEGRAL 1
 #endif
 
 const float kHalfPi = 1.57079632679490;
 
+// An angle with its cosine and sine (the march works with cosines and takes an acos only when a
+// tap raises the horizon).
+struct Angle {
+  float a, c, s;
+};
+
 struct Slice {
-  vec3 v, d;     // unit view vector and in-slice tangent (d perpendicular to v)
-  float n;       // angle of the projected normal from v, towards d
-  float np;      // length of the projected normal
+  vec3 v, d;      // unit view vector and in-slice tangent (d perpendicular to v)
+  float n;        // angle of the projected normal from v, towards d
+  float np;       // length of the projected normal
   float cosN, sinN;
-  float lo, hi;  // the hemisphere's part of this half-slice: theta in [lo, hi]
+  Angle lo, hi;   // the hemisphere's part of this half-slice: theta in [lo, hi]
 };
 
 Slice makeSlice(vec3 v, vec3 normal, vec3 tangent) {
@@ -35,22 +42,40 @@ Slice makeSlice(vec3 v, vec3 normal, vec3 tangent) {
   s.d = d * inversesqrt(max(dot(d, d), 1e-20));
   float nv = dot(normal, v), nd = dot(normal, s.d);
   s.np = sqrt(nv * nv + nd * nd);
-  s.n = s.np > 1e-6 ? atan(nd, nv) : 0.0;
-  s.cosN = cos(s.n);
-  s.sinN = sin(s.n);
-  s.lo = max(0.0, s.n - kHalfPi);
-  s.hi = min(kPi, s.n + kHalfPi);
+  bool degenerate = s.np < 1e-6;  // the normal is perpendicular to the slice
+  s.n = degenerate ? 0.0 : atan(nd, nv);
+  s.cosN = degenerate ? 1.0 : nv / s.np;
+  s.sinN = degenerate ? 0.0 : nd / s.np;
+  // hi = min(pi, n + pi/2), lo = max(0, n - pi/2); cos(n + pi/2) = -sin n, sin(n + pi/2) = cos n.
+  s.hi = s.n <= kHalfPi ? Angle(s.n + kHalfPi, -s.sinN, s.cosN) : Angle(kPi, -1.0, 0.0);
+  s.lo = s.n > kHalfPi ? Angle(s.n - kHalfPi, s.sinN, -s.cosN) : Angle(0.0, 1.0, 0.0);
   return s;
 }
 
-// The slice measure of the directions from lo up to theta (increasing in theta).
-float sliceMeasure(Slice s, float theta) {
+// The slice measure of the directions from 0 up to angle t (increasing in t).
+float sliceMeasure(Slice s, Angle t) {
 #if HBAO_INTEGRAL == 1
-  return 0.25 * s.np * (s.cosN - cos(2.0 * theta - s.n) + 2.0 * theta * s.sinN);
+  // cos(2t - n) = cos 2t cos n + sin 2t sin n
+  float cos2tn = (2.0 * t.c * t.c - 1.0) * s.cosN + 2.0 * t.s * t.c * s.sinN;
+  return 0.25 * s.np * (s.cosN - cos2tn + 2.0 * t.a * s.sinN);
 #else
-  return -cos(theta);
+  return -t.c;
 #endif
 }
 
-// Angle from v towards d of the offset to a tap (taps of this direction lie on d's side).
-float tapAngle(Slice s, vec3 offset) { return atan(max(dot(offset, s.d), 0.0), dot(offset, s.v)); }
+// The angle whose cosine is c, in [0, pi] (only the cosine integral needs the angle itself).
+Angle angleOf(float c) {
+  c = clamp(c, -1.0, 1.0);
+#if HBAO_INTEGRAL == 1
+  return Angle(acos(c), c, sqrt(1.0 - c * c));
+#else
+  return Angle(0.0, c, sqrt(1.0 - c * c));
+#endif
+}
+
+// Cosine of the angle from v towards d of the offset to a tap (taps of this direction lie on d's
+// side; the part of the offset out of the slice's plane is ignored). Decreasing in the angle.
+float tapCos(Slice s, vec3 offset) {
+  float x = dot(offset, s.v), y = max(dot(offset, s.d), 0.0);
+  return x * inversesqrt(max(x * x + y * y, 1e-30));
+}

@@ -13,6 +13,8 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
+
 namespace rtlab {
 namespace {
 
@@ -66,10 +68,12 @@ public:
     pass.fragment = "hbao/hbao.frag";
     pass.defines = {frame.params().getEnumName("hbao.integral") == "cosine" ? "HBAO_INTEGRAL 1" : "HBAO_INTEGRAL 0"};
     pass.bind = [](PassContext& ctx, gl::Program& p) {
+      const float bias = glm::radians(ctx.params.getFloat("hbao.angle_bias"));
       p.set("uDirections", ctx.params.getInt("hbao.directions"))
           .set("uSteps", ctx.params.getInt("hbao.steps"))
           .set("uMaxRadiusPx", ctx.params.getFloat("hbao.max_radius_px"))
-          .set("uAngleBias", glm::radians(ctx.params.getFloat("hbao.angle_bias")))
+          .set("uAngleBias", bias)
+          .set("uBiasCosSin", glm::vec2(std::cos(bias), std::sin(bias)))
           .set("uAttenuation", ctx.params.getFloat("hbao.attenuation"))
           .set("uJitter", ctx.params.getBool("hbao.jitter"));
     };
