@@ -29,10 +29,11 @@ public:
             .withFlags(kParamRecompile)
             .withHelp("cosine: hemisphere about the normal, cosine-distributed (estimates the cosine-weighted AO); "
                       "sphere: the classic sphere volume, visibility 2(1 - occluded fraction)"),
-        ParamSpec::choice("ssao.distribution", "Length distribution", {"uniform", "center", "shell"}, 0)
+        ParamSpec::choice("ssao.distribution", "Length distribution", {"uniform", "center", "shell"}, 2)
             .withFlags(kParamRecompile)
-            .withHelp("Point distances along each direction: uniform in the volume, or concentrated near the "
-                      "centre (mix(0.1, 1, s^2))"),
+            .withHelp("Point distances along each direction: uniform in the volume, concentrated near the "
+                      "centre (mix(0.1, 1, s^2)), or all at ao.radius (shell: behind a height field exactly when "
+                      "the ray hits within the radius)"),
         ParamSpec::boolean("ssao.rotate", "Per-pixel rotation", true)
             .withHelp("Turn the kernel about the normal and offset its lengths per pixel by blue noise"),
         ParamSpec::choice("ssao.range_check", "Range check", {"off", "smooth", "distance"}, 1)
