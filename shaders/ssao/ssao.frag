@@ -31,8 +31,10 @@ vec3 kernelPoint(int i, int n, float jitter) {
   float z = sqrt(max(1.0 - u, 0.0));
 #endif
   float v = fract(radicalInverse(uint(i)) + jitter);
-#ifdef LENGTH_CENTER
+#if defined(LENGTH_CENTER)
   float len = mix(0.1, 1.0, v * v);
+#elif defined(LENGTH_SHELL)
+  float len = 1.0;
 #else
   float len = pow(max(v, 1e-3), 1.0 / 3.0);
 #endif

@@ -29,10 +29,11 @@ public:
             .withFlags(kParamRecompile)
             .withHelp("cosine: hemisphere about the normal, cosine-distributed (estimates the cosine-weighted AO); "
                       "sphere: the classic sphere volume, visibility 2(1 - occluded fraction)"),
-        ParamSpec::choice("ssao.distribution", "Length distribution", {"uniform", "center"}, 0)
+        ParamSpec::choice("ssao.distribution", "Length distribution", {"uniform", "center", "shell"}, 2)
             .withFlags(kParamRecompile)
-            .withHelp("Point distances along each direction: uniform in the volume, or concentrated near the "
-                      "centre (mix(0.1, 1, s^2))"),
+            .withHelp("Point distances along each direction: uniform in the volume, concentrated near the "
+                      "centre (mix(0.1, 1, s^2)), or all at ao.radius (shell: behind a height field exactly when "
+                      "the ray hits within the radius)"),
         ParamSpec::boolean("ssao.rotate", "Per-pixel rotation", true)
             .withHelp("Turn the kernel about the normal and offset its lengths per pixel by blue noise"),
         ParamSpec::choice("ssao.range_check", "Range check", {"off", "smooth", "distance"}, 1)
@@ -56,7 +57,9 @@ public:
     pass.technique = "ssao";
     pass.fragment = "ssao/ssao.frag";
     if (frame.params().getEnumName("ssao.kernel") == "sphere") pass.defines.push_back("KERNEL_SPHERE");
-    if (frame.params().getEnumName("ssao.distribution") == "center") pass.defines.push_back("LENGTH_CENTER");
+    const std::string& lengths = frame.params().getEnumName("ssao.distribution");
+    if (lengths == "center") pass.defines.push_back("LENGTH_CENTER");
+    if (lengths == "shell") pass.defines.push_back("LENGTH_SHELL");
     pass.bind = [](PassContext& ctx, gl::Program& p) {
       p.set("uSampleCount", ctx.params.getInt("ssao.samples"))
           .set("uBias", ctx.params.getFloat("ssao.bias"))

@@ -57,8 +57,11 @@ TEST(Ssao, CreaseDarkensTowardsTheWallAndNotBeyondTheRadius) {
   EXPECT_LT(ao[1], ao[2] + 0.02);
   EXPECT_GE(ao[3], 0.97) << "beyond ao.radius nothing occludes";
   EXPECT_GE(ao[4], 0.97);
-  // Measured rmse 0.0 (no AO: 0.0); the bound keeps most of the gain over no AO.
-  EXPECT_LT(m.metrics.rmse, 0.6 * m.noAo.rmse);
+  // Measured at the defaults: rmse 0.042 against 0.172 for no AO (0.25x; the classic form --
+  // sphere kernel, uniform lengths, no range check -- gives 0.098, 0.57x). The residual is the blur across the
+  // crease's last pixels and the height-field test; 0.4x keeps margin for a 256-spp reference
+  // and fails if the crease loses its occlusion or the floor beyond the radius darkens.
+  EXPECT_LT(m.metrics.rmse, 0.4 * m.noAo.rmse);
   EXPECT_EQ(m.metrics.nanCount, 0u);
 }
 

@@ -34,6 +34,18 @@ vec2 aoFullPixel(ivec2 px) { return vec2(px * uScale) + 0.5; }
 // Linear depth stored at AO texel `px`; 0 on sky pixels.
 float aoStoredDepth(ivec2 px) { return texelFetch(uAoView, clamp(px, ivec2(0), uAoSize - 1), 0).w; }
 
+// View-space position of the surface stored at AO texel `px` (meaningless on sky: check depth).
+vec3 aoStoredPosition(ivec2 px) {
+  px = clamp(px, ivec2(0), uAoSize - 1);
+  return aoViewPosition(aoFullPixel(px), texelFetch(uAoView, px, 0).w);
+}
+
+// AO texels spanned by one scene unit at linear depth `depth` (vertical, perspective camera):
+// a world length L projects to about L * aoTexelsPerUnit(depth) texels.
+float aoTexelsPerUnit(float depth) {
+  return 0.5 * uProj[1][1] * float(uFullSize.y) / (max(depth, 1e-6) * float(uScale));
+}
+
 // False on sky pixels (no surface: excluded, the stage writes 0 there and the mask is 0).
 bool aoSurface(ivec2 px, out AoSurface s) {
   vec4 v = texelFetch(uAoView, px, 0);

@@ -31,7 +31,7 @@ void main() {
     vec2 d = abs(aoFullPixel(uPatternPixel) - gPatternFrag);
     if (max(d.x, d.y) <= gPatternMarker) color = vec3(1.0);
   }
-  oValue = vec4(color, surface ? 1.0 : 0.0);
+  oValue = surface ? vec4(color, 1.0) : vec4(0.0); // background: 0, mask 0
 #else
   oAo = ao;
 #endif
