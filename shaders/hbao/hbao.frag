@@ -37,8 +37,7 @@ vec3 surfaceThrough(vec2 q, ivec2 tap, vec4 texel) {
 float aoEvaluate(ivec2 px, AoSurface s) {
   // ao.radius in frame pixels at this depth (the pixel cap bounds the cost near the camera); the
   // first tap is far enough to leave the centre's AO texel in every direction.
-  float focalPx = uProj[1][1] * 0.5 * float(uFullSize.y);
-  float radiusPx = min(uRadius * focalPx / max(s.depth, 1e-6), uMaxRadiusPx);
+  float radiusPx = min(uRadius * aoTexelsPerUnit(s.depth) * float(uScale), uMaxRadiusPx);
   float firstPx = 1.5 * float(uScale) - 0.5;
   if (radiusPx < firstPx) return 1.0; // everything within ao.radius lies inside this texel
   float stepPx = (radiusPx - firstPx) / float(uSteps);
