@@ -7,8 +7,10 @@
 #      turned every round (interleaved, so that a change in the machine's load hits every setting
 #      alike); `ms` is the median over the rounds of the technique's passes summed (each a median
 #      over the 5 frames);
+#      (the TIMED with the fewest taps per frame pixel, plus the cheapest at full resolution);
 #   3. the cheapest qualifying hbao setting by measured time, and its time over ssao-64's.
-# Usage: bash bench/bench_hbao_sweep.sh [path/to/rtlab]   (env: ROUNDS=5 SPP=1024 TIMED=6)
+# Usage: bash bench/bench_hbao_sweep.sh [path/to/rtlab]
+#   env: ROUNDS=5 SPP=1024 TIMED=6; KEEP=1 keeps the work folder (sweep, stats) and prints it
 # On Mesa's llvmpipe timing is cpu-finish on a CPU shared with other work: compare rows of one
 # run only.
 set -euo pipefail
@@ -19,7 +21,7 @@ rounds=${ROUNDS:-5}
 spp=${SPP:-1024}
 timed=${TIMED:-6} # qualifying hbao settings timed, the fewest taps first
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+if [ -n "${KEEP:-}" ]; then echo "work folder: $work"; else trap 'rm -rf "$work"' EXIT; fi
 export RTLAB_CACHE_DIR="$work/cache"
 frame=(--scene cornell --size 1280x720)
 
@@ -48,7 +50,9 @@ print(f"hbao defaults (8x6)\t{default['rmse']}\t-t hbao")
 ok = [r for r in hbao if float(r["rmse"]) <= limit]
 # Fewest taps per frame pixel first (directions x steps, a quarter at half resolution).
 cost = lambda r: int(r["hbao.directions"]) * int(r["hbao.steps"]) / (4 if r["hbao.half_resolution"] == "true" else 1)
-for r in sorted(ok, key=cost)[:int(sys.argv[2])]:
+timed = sorted(ok, key=cost)[:int(sys.argv[2])]
+full = [r for r in sorted(ok, key=cost) if r["hbao.half_resolution"] == "false"][:1]
+for r in timed + [r for r in full if r not in timed]:
     print(f"{label(r)}\t{r['rmse']}\t{opts(r)}")
 print(f"# {len(ok)} of {len(hbao)} hbao settings have rmse <= ssao-64's {limit:.5f}", file=sys.stderr)
 PY
@@ -57,6 +61,25 @@ echo "all hbao settings (--frames 1; ms is a single frame, for orientation only)
 echo "directions,steps,half_resolution,ms,rmse"
 awk -F, 'NR > 1 && $1 == "hbao" { printf "%s,%s,%s,%.1f,%.5f\n", $2, $3, $4, $6, $8 }' "$work/errors/results.csv"
 
+cat >"$work/summary.py" <<'PY'
+import statistics, sys
+rows = []
+for line in sys.stdin:
+    label, rmse, times = line.rstrip("\n").split("\t")
+    t = [float(x) for x in times.split()]
+    rows.append((label, float(rmse), statistics.median(t), t))
+print("%-22s %8s %8s  %s" % ("setting", "rmse", "ms", "ms per round"))
+for label, rmse, ms, t in rows:
+    print("%-22s %8.5f %8.1f  %s" % (label, rmse, ms, " ".join("%.0f" % x for x in t)))
+ssao, rest = rows[0], rows[2:]
+if not rest:
+    best = min(rows[1:], key=lambda r: r[1])
+    print("no hbao setting reaches ssao-64's rmse %.5f; the lowest is %s at %.5f" % (ssao[1], best[0], best[1]))
+else:
+    best = min(rest, key=lambda r: r[2])
+    print("cheapest hbao with rmse <= ssao-64's (%.5f): %s, %.1f ms, rmse %.5f; ssao-64 %.1f ms; ratio %.3f"
+          % (ssao[1], best[0], best[2], best[1], ssao[2], best[2] / ssao[2]))
+PY
 mapfile -t settings < <(grep -v '^#' "$work/settings.txt")
 n=${#settings[@]}
 for ((round = 0; round < rounds; ++round)); do
@@ -75,24 +98,5 @@ echo "timed interleaved: $rounds rounds of --frames 5 (ms: median over rounds of
 for ((i = 0; i < n; ++i)); do
   IFS=$'\t' read -r label rmse _ <<<"${settings[$i]}"
   printf '%s\t%s\t%s\n' "$label" "$rmse" "$(cut -d' ' -f1 "$work/times_$i.txt" | tr '\n' ' ')"
-done | python3 -c '
-import statistics, sys
-rows = []
-for line in sys.stdin:
-    label, rmse, times = line.rstrip("\n").split("\t")
-    t = [float(x) for x in times.split()]
-    rows.append((label, float(rmse), statistics.median(t), min(t), max(t)))
-print(f"{\"setting\":24} {\"rmse\":>8} {\"ms\":>8} {\"min\":>8} {\"max\":>8}")
-for r in rows:
-    print(f"{r[0]:24} {r[1]:8.5f} {r[2]:8.1f} {r[3]:8.1f} {r[4]:8.1f}")
-ssao = rows[0]
-cands = rows[2:]
-if not cands:
-    best = min(rows[1:], key=lambda r: r[1])
-    print(f"no hbao setting reaches ssao-64 rmse {ssao[1]:.5f}; the best found is {best[0]} at {best[1]:.5f}")
-else:
-    best = min(cands, key=lambda r: r[2])
-    print(f"cheapest hbao with rmse <= ssao-64 ({ssao[1]:.5f}): {best[0]}, {best[2]:.1f} ms, rmse {best[1]:.5f}; "
-          f"ssao-64 {ssao[2]:.1f} ms; ratio {best[2] / ssao[2]:.3f}")
-'
+done | python3 "$work/summary.py"
 echo "timing method: $(cut -d' ' -f2 "$work/times_0.txt" | sort -u | tr '\n' ' ')"

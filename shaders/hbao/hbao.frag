@@ -80,7 +80,7 @@ float aoEvaluate(ivec2 px, AoSurface s) {
         vec3 offsetView = surfaceThrough(q, tap, texel) - s.p;
         float d2 = dot(offsetView, offsetView);
         float c = min(tapCos(sl, offsetView), sl.lo.c);  // the tap's angle, at least lo
-        if (d2 <= r2 && c > horizonCos) {
+        if (d2 <= r2 && d2 > 0.0 && c > horizonCos) {
           float measure = sliceMeasure(sl, angleOf(c));
           occlusion += (1.0 - uAttenuation * d2 / r2) * (horizonMeasure - measure);
           horizonCos = c;
