@@ -190,16 +190,19 @@ void AoKit::bindNoise(gl::Program& program) {
 void addAoPasses(FrameGraph& frame, const AoEstimatorPass& pass, AoKit& kit) {
   const std::string& t = pass.technique;
   const AoLayout l = aoLayout(frame, t);
+  const bool blur = frame.params().getBool(t + ".blur");
+  // At full resolution the last pass writes the stage output itself (no resolve copy).
+  const bool full = l.scale == 1;
+  const std::string raw = full && !blur ? std::string("ao") : aores::kRaw;
+  const std::string filtered = !blur ? raw : full ? std::string("ao") : aores::kBlurred;
   addPrepare(frame, t, l);
-  addEstimator(frame, pass, kit, l, t + ".estimate", aores::kRaw, false);
-  std::string filtered = aores::kRaw;
-  if (frame.params().getBool(t + ".blur")) {
-    addBlur(frame, t, l, aores::kRaw, aores::kBlurX, {1, 0});
-    addBlur(frame, t, l, aores::kBlurX, aores::kBlurred, {0, 1});
-    filtered = aores::kBlurred;
+  addEstimator(frame, pass, kit, l, t + ".estimate", raw, false);
+  if (blur) {
+    addBlur(frame, t, l, raw, aores::kBlurX, {1, 0});
+    addBlur(frame, t, l, aores::kBlurX, filtered, {0, 1});
   }
-  addResolve(frame, t + ".resolve", l, filtered, "ao", false, false);
-  addResolve(frame, t + ".view_raw", l, aores::kRaw, aovResource(t + ".raw"), true, true);
+  if (!full) addResolve(frame, t + ".resolve", l, filtered, "ao", false, false);
+  addResolve(frame, t + ".view_raw", l, raw, aovResource(t + ".raw"), true, true);
   addResolve(frame, t + ".view_blurred", l, filtered, aovResource(t + ".blurred"), true, false);
   addEstimator(frame, pass, kit, l, t + ".view_pattern", aovResource(t + ".pattern"), true);
 }
