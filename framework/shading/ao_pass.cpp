@@ -33,13 +33,22 @@ gl::TextureDesc aoTexture(const AoLayout& l, GLenum format) {
   return d;
 }
 
+// View-space xy at linear depth 1 seen through frame pixel coordinate f: with a perspective
+// projection P (clip.w = -z), ndc.x = (P00 x + P20 z) / -z, so x / depth = (ndc.x + P20) / P00,
+// ndc.x = 2 f.x / width - 1: x = depth * (f.x * 2 / (width P00) + (P20 - 1) / P00), and alike y.
+glm::vec4 viewRay(const FrameView& v) {
+  const glm::mat4& p = v.proj;
+  return {2.0f / (float(v.width) * p[0][0]), 2.0f / (float(v.height) * p[1][1]), (p[2][0] - 1.0f) / p[0][0],
+          (p[2][1] - 1.0f) / p[1][1]};
+}
+
 // The uniforms of shaders/ao/common/ao_common.glsl and bilateral.glsl, ao.view on unit 0.
 void bindAoCommon(PassContext& ctx, gl::Program& p, const AoLayout& l) {
   ctx.texture(aores::kView).bind(0);
   const float radius = ctx.params.getFloat("ao.radius");
   p.set("uAoView", 0)
       .set("uProj", ctx.view.proj)
-      .set("uInvProj", glm::inverse(ctx.view.proj))
+      .set("uViewRay", viewRay(ctx.view))
       .set("uAoSize", glm::ivec2(l.width, l.height))
       .set("uFullSize", glm::ivec2(ctx.view.width, ctx.view.height))
       .set("uScale", l.scale)
