@@ -28,3 +28,14 @@ echo
 echo "technique,samples,half_resolution,ms,frame_ms,rmse,timing"
 tail -n +2 "$work/sweep/results.csv" | awk -F, '{ printf "%s,%s,%s,%s,%s,%s,%s\n", $1, $2, $3, $4, $5, $6, $10 }'
 echo "no AO (ao = 1): rmse $none_rmse"
+echo
+echo "per pass (ms, median of the frames):"
+for stats in "$work"/sweep/points/*/stats.json; do
+  python3 - "$stats" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+p = s["params"]
+passes = " + ".join(f'{x["name"]} {x["ms"]:.1f}' for x in s["passes"] if x["technique"] == "ssao")
+print(f'samples {p["ssao.samples"]}, half_resolution {str(p["ssao.half_resolution"]).lower()}: {passes}')
+PY
+done

@@ -33,13 +33,22 @@ gl::TextureDesc aoTexture(const AoLayout& l, GLenum format) {
   return d;
 }
 
+// View-space xy at linear depth 1 seen through frame pixel coordinate f: with a perspective
+// projection P (clip.w = -z), ndc.x = (P00 x + P20 z) / -z, so x / depth = (ndc.x + P20) / P00,
+// ndc.x = 2 f.x / width - 1: x = depth * (f.x * 2 / (width P00) + (P20 - 1) / P00), and alike y.
+glm::vec4 viewRay(const FrameView& v) {
+  const glm::mat4& p = v.proj;
+  return {2.0f / (float(v.width) * p[0][0]), 2.0f / (float(v.height) * p[1][1]), (p[2][0] - 1.0f) / p[0][0],
+          (p[2][1] - 1.0f) / p[1][1]};
+}
+
 // The uniforms of shaders/ao/common/ao_common.glsl and bilateral.glsl, ao.view on unit 0.
 void bindAoCommon(PassContext& ctx, gl::Program& p, const AoLayout& l) {
   ctx.texture(aores::kView).bind(0);
   const float radius = ctx.params.getFloat("ao.radius");
   p.set("uAoView", 0)
       .set("uProj", ctx.view.proj)
-      .set("uInvProj", glm::inverse(ctx.view.proj))
+      .set("uViewRay", viewRay(ctx.view))
       .set("uAoSize", glm::ivec2(l.width, l.height))
       .set("uFullSize", glm::ivec2(ctx.view.width, ctx.view.height))
       .set("uScale", l.scale)
@@ -190,16 +199,19 @@ void AoKit::bindNoise(gl::Program& program) {
 void addAoPasses(FrameGraph& frame, const AoEstimatorPass& pass, AoKit& kit) {
   const std::string& t = pass.technique;
   const AoLayout l = aoLayout(frame, t);
+  const bool blur = frame.params().getBool(t + ".blur");
+  // At full resolution the last pass writes the stage output itself (no resolve copy).
+  const bool full = l.scale == 1;
+  const std::string raw = full && !blur ? std::string("ao") : aores::kRaw;
+  const std::string filtered = !blur ? raw : full ? std::string("ao") : aores::kBlurred;
   addPrepare(frame, t, l);
-  addEstimator(frame, pass, kit, l, t + ".estimate", aores::kRaw, false);
-  std::string filtered = aores::kRaw;
-  if (frame.params().getBool(t + ".blur")) {
-    addBlur(frame, t, l, aores::kRaw, aores::kBlurX, {1, 0});
-    addBlur(frame, t, l, aores::kBlurX, aores::kBlurred, {0, 1});
-    filtered = aores::kBlurred;
+  addEstimator(frame, pass, kit, l, t + ".estimate", raw, false);
+  if (blur) {
+    addBlur(frame, t, l, raw, aores::kBlurX, {1, 0});
+    addBlur(frame, t, l, aores::kBlurX, filtered, {0, 1});
   }
-  addResolve(frame, t + ".resolve", l, filtered, "ao", false, false);
-  addResolve(frame, t + ".view_raw", l, aores::kRaw, aovResource(t + ".raw"), true, true);
+  if (!full) addResolve(frame, t + ".resolve", l, filtered, "ao", false, false);
+  addResolve(frame, t + ".view_raw", l, raw, aovResource(t + ".raw"), true, true);
   addResolve(frame, t + ".view_blurred", l, filtered, aovResource(t + ".blurred"), true, false);
   addEstimator(frame, pass, kit, l, t + ".view_pattern", aovResource(t + ".pattern"), true);
 }

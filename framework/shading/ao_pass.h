@@ -58,8 +58,9 @@ private:
   gl::Texture m_noise;
 };
 
-// Adds the whole ao chain for the technique: prepare, estimator, blur (when "<id>.blur" and a
-// radius above 0), resolve into "ao", and the three debug views (culled unless requested).
+// Adds the whole ao chain for the technique: prepare, estimator, blur (when "<id>.blur"), the
+// depth-aware upsampling into "ao" at half resolution (at full resolution the last of estimator
+// and blur writes "ao" itself), and the three debug views (culled unless requested).
 void addAoPasses(FrameGraph& frame, const AoEstimatorPass& pass, AoKit& kit);
 
 } // namespace rtlab

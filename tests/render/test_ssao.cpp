@@ -129,6 +129,29 @@ TEST(Ssao, ExtremesAreFiniteAndExcludeSky) {
   EXPECT_GE(test::fractionAtLeast(tiny.ao, 0.99f), 0.99);
 }
 
+TEST(Ssao, AoResourcesExistOnlyWhileActiveAndNeeded) {
+  auto aoBytes = [](const TestRender& r) {
+    std::size_t bytes = 0;
+    for (const auto& res : r.renderer->resources())
+      if (res.name.rfind("ao.", 0) == 0) bytes += res.bytes;
+    return bytes;
+  };
+  TestFrame none = makeTestFrame("cornell", "none", {}, 64, 64);
+  EXPECT_EQ(aoBytes(renderTestFrame(none, {"color"})), 0u);
+  TestFrame on = makeTestFrame("cornell", "ssao", {}, 64, 64);
+  const std::size_t fullBytes = aoBytes(renderTestFrame(on, {"color"}));
+  EXPECT_GT(fullBytes, 0u);
+  // Asking only for depth needs no AO: every ssao pass is culled and its textures released.
+  const TestRender depth = renderTestFrame(on, {"depth"});
+  EXPECT_EQ(aoBytes(depth), 0u);
+  for (const auto& p : depth.renderer->lastPasses())
+    EXPECT_TRUE(p.technique != "ssao" || !p.kept) << p.name;
+  // Half resolution holds a quarter of the AO-resolution textures.
+  TestFrame half = makeTestFrame("cornell", "ssao", {"ssao.half_resolution=true"}, 64, 64);
+  EXPECT_LT(aoBytes(renderTestFrame(half, {"color"})), fullBytes / 2);
+  EXPECT_EQ(aoBytes(renderTestFrame(none, {"color"})), 0u);
+}
+
 TEST(Ssao, DebugViewsRender) {
   for (const char* half : {"ssao.half_resolution=false", "ssao.half_resolution=true"}) {
     TestFrame f = makeTestFrame("cornell", "ssao", {half}, 64, 48);

@@ -7,7 +7,7 @@
 uniform sampler2D uAoView;   // unit 0
 uniform sampler2D uAoNoise;  // unit 1: 64x64 blue noise in [0, 1)
 uniform mat4 uProj;          // view -> clip
-uniform mat4 uInvProj;       // clip -> view
+uniform vec4 uViewRay;       // view xy at depth 1 = fullPx * uViewRay.xy + uViewRay.zw (see ao_pass.cpp)
 uniform ivec2 uAoSize;       // size of ao.view (the AO resolution)
 uniform ivec2 uFullSize;     // frame size
 uniform int uScale;          // 1 full resolution, 2 half: ao.view texel k is frame pixel k * uScale
@@ -20,12 +20,9 @@ struct AoSurface {
 };
 
 // View-space position of the surface at linear depth `depth` seen through frame point `fullPx`
-// (frame pixels, continuous). Perspective camera: the point on the near plane scaled to depth.
+// (frame pixels, continuous); perspective camera: the view ray at depth 1, scaled.
 vec3 aoViewPosition(vec2 fullPx, float depth) {
-  vec2 ndc = fullPx / vec2(uFullSize) * 2.0 - 1.0;
-  vec4 nearPoint = uInvProj * vec4(ndc, -1.0, 1.0);
-  vec3 q = nearPoint.xyz / nearPoint.w;
-  return q * (depth / -q.z);
+  return vec3((fullPx * uViewRay.xy + uViewRay.zw) * depth, -depth);
 }
 
 // Frame-pixel center that the AO-resolution texel `px` stands for (ao_pass prepare picks it).

@@ -1,6 +1,6 @@
 // main() of every ao estimator, included after the technique defines
 //   float aoEvaluate(ivec2 px, AoSurface s)  // unoccluded fraction in [0, 1]
-// Writes ao.raw (1 on sky pixels, which the resolve masks out), or with AO_PATTERN the debug view
+// Writes ao.raw (0 on sky pixels, which every later pass skips), or with AO_PATTERN the debug view
 // <id>.pattern at frame resolution: the raw AO in grey, the pattern pixel's samples as squares
 // (green unoccluded, red occluded), the pattern pixel itself in white.
 #ifdef AO_PATTERN
@@ -18,11 +18,11 @@ void main() {
 #endif
   AoSurface s;
   bool surface = aoSurface(px, s);
-  float ao = surface ? clamp(aoEvaluate(px, s), 0.0, 1.0) : 1.0;
+  float ao = surface ? clamp(aoEvaluate(px, s), 0.0, 1.0) : 0.0;
 #ifdef AO_PATTERN
   gPatternFrag = vec2(frag) + 0.5;
   gPatternMarker = max(1.0, float(uFullSize.y) / 240.0);
-  vec3 color = vec3(0.6 * ao);
+  vec3 color = vec3(0.6 * ao); // sky: overwritten below
   AoSurface c;
   if (aoSurface(uPatternPixel, c)) {
     gPatternActive = true;
