@@ -16,19 +16,14 @@ uniform vec2 uBiasCosSin;    // cos and sin of uAngleBias
 uniform float uAttenuation;  // W(r) = 1 - uAttenuation r^2 / R^2
 uniform bool uJitter;        // per-pixel rotation of the directions and offset of the taps
 
-// View-space point at linear depth 1 seen through frame point q (frame pixels, continuous), for
-// the symmetric perspective of FrameView (what aoViewPosition computes with the inverse
-// projection, in two multiply-adds).
-vec3 viewRay(vec2 q) { return vec3((2.0 * q / vec2(uFullSize) - 1.0) / vec2(uProj[0][0], uProj[1][1]), -1.0); }
-
 // The surface point seen through frame point q, on the plane of the AO texel that holds q (its
 // stored depth and normal): exact on planar surfaces, so the taps lie on the direction's line
 // rather than at texel centres up to half a texel off it, which on surfaces seen at grazing
 // angles would tilt them tens of degrees out of the tangent plane. Where the ray nearly grazes
 // that plane the texel's own point is used.
 vec3 surfaceThrough(vec2 q, ivec2 tap, vec4 texel) {
-  vec3 stored = viewRay(aoFullPixel(tap)) * texel.w;
-  vec3 ray = viewRay(q);
+  vec3 stored = aoViewPosition(aoFullPixel(tap), texel.w);
+  vec3 ray = aoViewPosition(q, 1.0);
   float denom = dot(ray, texel.xyz);
   if (abs(denom) < 1e-2 * length(ray)) return stored;
   return ray * (dot(stored, texel.xyz) / denom);
