@@ -25,7 +25,7 @@ v=(--scene contact --size 240x160 --set camera.position=2.5,0.1,-1 --set camera.
 ref "${v[@]}" --out "$work/g_ref.png"
 ssao "${v[@]}" --aov ao --out "$work/g_def.png"
 ssao "${v[@]}" --set ssao.bias=0 --set ssao.range_check=off --set ssao.blur=false --set ssao.half_resolution=true \
-  --aov ao --out "$work/g_worst.png"
+  --set ssao.distribution=uniform --aov ao --out "$work/g_worst.png"
 row "$out/grazing.png" "$work/g_ref.png" "$work/g_def.png" "$work/g_worst.png"
 
 # Off-screen occluder: cornell's floor with the back wall just above the top edge.

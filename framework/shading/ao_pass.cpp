@@ -166,7 +166,7 @@ std::vector<ParamSpec> aoFilterParams(const std::string& t) {
   return {
       ParamSpec::boolean(t + ".blur", "Bilateral blur", true)
           .withHelp("Depth- and normal-aware separable blur of the raw AO (removes the rotation noise)"),
-      ParamSpec::integer(t + ".blur_radius", "Blur radius", 4, 1, 8)
+      ParamSpec::integer(t + ".blur_radius", "Blur radius", 2, 1, 8)
           .withUnit("AO pixels")
           .withHelp(
               "Half-width of each blur direction; Gaussian sigma = radius/2 (half-resolution pixels when halved)"),
