@@ -1,5 +1,5 @@
 // HBAO — Bavoil, Sainz & Dimitrov 2008, "Image-space horizon-based ambient occlusion"
-// (SIGGRAPH 2008 talk; ShaderX7 chapter 6.2). Approximates the ao stage's output, the
+// (SIGGRAPH 2008 talk; ShaderX7, chapter 6.2). Approximates the ao stage's output, the
 // cosine-weighted unoccluded fraction within ao.radius, from the depth buffer alone: around each
 // pixel it marches a few screen-space directions, finds in each the highest horizon among the
 // surface points within ao.radius, and integrates the open part of the hemisphere above those
