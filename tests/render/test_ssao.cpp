@@ -111,7 +111,10 @@ TEST(Ssao, ExtremesAreFiniteAndExcludeSky) {
       with(kGrazing, {"ao.radius=0.01"}),
       with(kGrazing, {"ao.radius=10"}),
       {"ao.radius=10", "ssao.half_resolution=true"},
-      // The camera 0.02 above the floor, below the near plane's reach: the floor is cut by it.
+      // The camera 0.0005 from the left wall, looking nearly along it: the wall enters the view
+      // nearer than the near plane (0.01 here), which cuts it at the left edge.
+      {"camera.position=-2.7495,1,1", "camera.target=-2.6,1,-2.75"},
+      // The camera 0.02 above the floor, looking along it.
       {"camera.position=0,0.02,2", "camera.target=0,0.02,-2"},
   };
   for (const auto& sets : cases) {
