@@ -1,8 +1,8 @@
 #version 450 core
 // Deferred direct lighting of every light from the G-buffer, plus emissive and a constant
 // ambient term scaled by the ao stage's output and the material occlusion, plus the indirect
-// stage's irradiance. Light 0 is scaled by the shadow stage's visibility; the others are
-// unshadowed.
+// stage's irradiance, also scaled by the ao stage's output. Light 0 is scaled by the shadow
+// stage's visibility; the others are unshadowed. AO never scales direct light.
 #include "../common/brdf.glsl"
 #include "../common/lights.glsl"
 
@@ -54,14 +54,14 @@ void main() {
 #endif
     color += evaluateBrdfCos(n, v, l, baseColor, metallic, roughness) * e;
   }
-  float occlusion = normalOcc.w;
+  float ao = 1.0;
 #ifdef HAS_AO
-  occlusion *= texelFetch(uAo, px, 0).r;
+  ao = texelFetch(uAo, px, 0).r;
 #endif
   vec3 diffuseAlbedo = baseColor * (1.0 - metallic);
-  color += uAmbient * diffuseAlbedo * occlusion;
+  color += uAmbient * diffuseAlbedo * (normalOcc.w * ao);
 #ifdef HAS_INDIRECT
-  color += texelFetch(uIndirect, px, 0).rgb * diffuseAlbedo * kInvPi;
+  color += texelFetch(uIndirect, px, 0).rgb * diffuseAlbedo * kInvPi * ao;
 #endif
   oColor = vec4(color, 1.0);
 }

@@ -1,0 +1,98 @@
+#version 450 core
+// HBAO (Bavoil, Sainz & Dimitrov 2008): uDirections screen-space directions around the pixel,
+// each marched for uSteps taps from the nearest neighbouring AO texel out to ao.radius projected
+// into pixels (at most uMaxRadiusPx). Along each direction the highest horizon among the surface
+// points within ao.radius bounds the open part of that direction's slice of the hemisphere
+// (horizon.glsl); the AO is the open fraction over all directions. View space throughout: the
+// camera sits at the origin, so the view vector is -p/|p|.
+#include "../ao/common/ao_common.glsl"
+#include "horizon.glsl"
+
+uniform int uDirections;
+uniform int uSteps;
+uniform float uMaxRadiusPx;  // frame pixels
+uniform float uAngleBias;    // radians
+uniform vec2 uBiasCosSin;    // cos and sin of uAngleBias
+uniform float uAttenuation;  // W(r) = 1 - uAttenuation r^2 / R^2
+uniform bool uJitter;        // per-pixel rotation of the directions and offset of the taps
+
+// The surface point seen through frame point q, on the plane of the AO texel that holds q (its
+// stored depth and normal): exact on planar surfaces, so the taps lie on the direction's line
+// rather than at texel centres up to half a texel off it, which on surfaces seen at grazing
+// angles would tilt them tens of degrees out of the tangent plane. Where the ray nearly grazes
+// that plane the texel's own point is used.
+vec3 surfaceThrough(vec2 q, ivec2 tap, vec4 texel) {
+  vec3 stored = aoViewPosition(aoFullPixel(tap), texel.w);
+  vec3 ray = aoViewPosition(q, 1.0);
+  float denom = dot(ray, texel.xyz);
+  if (abs(denom) < 1e-2 * length(ray)) return stored;
+  return ray * (dot(stored, texel.xyz) / denom);
+}
+
+float aoEvaluate(ivec2 px, AoSurface s) {
+  // ao.radius in frame pixels at this depth (the pixel cap bounds the cost near the camera); the
+  // first tap is far enough to leave the centre's AO texel in every direction.
+  float radiusPx = min(uRadius * aoTexelsPerUnit(s.depth) * float(uScale), uMaxRadiusPx);
+  float firstPx = 1.5 * float(uScale) - 0.5;
+  if (radiusPx < firstPx) return 1.0; // everything within ao.radius lies inside this texel
+  float stepPx = (radiusPx - firstPx) / float(uSteps);
+  float rotation = uJitter ? aoNoise(px, 0) : 0.5;
+  float offset = uJitter ? aoNoise(px, 1) : 0.5;
+  vec2 centre = aoFullPixel(px);
+  vec3 v = normalize(-s.p);
+  float r2 = uRadius * uRadius;
+  float occlusion = 0.0, open = 0.0;
+  // Directions 2 pi (k + rotation) / N, turned from one to the next by a fixed rotation.
+  float phi = rotation * (2.0 * kPi / float(uDirections));
+  vec2 dir = vec2(cos(phi), sin(phi));
+  float stepAngle = 2.0 * kPi / float(uDirections);
+  mat2 turn = mat2(cos(stepAngle), sin(stepAngle), -sin(stepAngle), cos(stepAngle));
+  for (int k = 0; k < uDirections; ++k, dir = turn * dir) {
+    Slice sl = makeSlice(v, s.n, vec3(dir, 0.0));
+    if (sl.hi.a <= sl.lo.a) continue;
+    float hiMeasure = sliceMeasure(sl, sl.hi);
+    open += hiMeasure - sliceMeasure(sl, sl.lo);
+    // A tap occludes only once it rises uAngleBias above the tangent plane. Cosine: the bias is a
+    // threshold, and the first tap above it occludes from the tangent plane up, so a real
+    // occluder loses nothing; solid angle: Bavoil's offset tangent t + bias.
+    Angle horizon = sl.lo;
+    if (sl.hi.a - uAngleBias > sl.lo.a)
+      horizon = Angle(sl.hi.a - uAngleBias, sl.hi.c * uBiasCosSin.x + sl.hi.s * uBiasCosSin.y,
+                      sl.hi.s * uBiasCosSin.x - sl.hi.c * uBiasCosSin.y);
+    float horizonCos = horizon.c;
+#if HBAO_INTEGRAL == 1
+    float horizonMeasure = hiMeasure;
+#else
+    float horizonMeasure = sliceMeasure(sl, horizon);
+#endif
+    for (int i = 0; i < uSteps; ++i) {
+      vec2 q = centre + dir * (firstPx + (float(i) + offset) * stepPx);
+      if (any(lessThan(q, vec2(0.0))) || any(greaterThanEqual(q, vec2(uFullSize)))) break; // off-screen
+      ivec2 tap = min(ivec2(q) / uScale, uAoSize - 1);
+      vec4 texel = texelFetch(uAoView, tap, 0);
+      float raised = 0.0;
+      if (texel.w > 0.0 && tap != px) {  // sky (depth 0) never occludes
+        vec3 offsetView = surfaceThrough(q, tap, texel) - s.p;
+        float d2 = dot(offsetView, offsetView);
+        float c = min(tapCos(sl, offsetView), sl.lo.c);  // the tap's angle, at least lo
+        if (d2 <= r2 && d2 > 0.0 && c > horizonCos) {
+          float measure = sliceMeasure(sl, angleOf(c));
+          occlusion += (1.0 - uAttenuation * d2 / r2) * (horizonMeasure - measure);
+          horizonCos = c;
+          horizonMeasure = measure;
+          raised = 1.0;
+        }
+      }
+      AO_VISIT(q / vec2(uFullSize), raised);
+    }
+  }
+  // Cosine: 1 - occluded / open measure, exactly 1 where nothing rises above the tangent plane
+  // whatever the directions. Solid angle: Bavoil's 1 - mean of (sin h - sin t) W.
+#if HBAO_INTEGRAL == 1
+  return open > 0.0 ? 1.0 - occlusion / open : 1.0;
+#else
+  return 1.0 - occlusion / float(uDirections);
+#endif
+}
+
+#include "../ao/common/ao_main.glsl"

@@ -1,0 +1,197 @@
+// ssao against its properties and the ray-traced reference (tests/render/ao_measure.h). Views are
+// set with camera.* so that the built-in scenes give the cases of issue 6: a flat floor seen at a
+// grazing angle (contact's ground, looking away from its objects), a floor meeting a wall at 90
+// degrees (cornell's floor and back wall, away from the blocks), and cornell as a whole. Bounds
+// were measured on llvmpipe (values in the comments) and carry a margin that still fails when
+// the estimator breaks.
+#include "ao_measure.h"
+#include "render_fixture.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace rtlab {
+namespace {
+
+using test::measureAo;
+
+// contact's ground (y = 0, |x|,|z| <= 6) from 0.3 above it, looking along -z at the ground's far
+// edge: only ground (down to a few degrees of grazing) and sky are in view.
+const std::vector<std::string> kGrazing = {"camera.position=2.5,0.3,-2", "camera.target=2.5,0,-6"};
+// cornell's floor (y = 0) meeting the back wall (z = -2.75) at x = 1.2, where the nearest block
+// and side wall are more than 1 away.
+const std::vector<std::string> kCrease = {"camera.position=1.2,1.3,-0.8", "camera.target=1.2,0.2,-2.75"};
+
+std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+TEST(Ssao, GrazingFloorHasNoFalseOcclusion) {
+  for (const char* extra : {"ssao.half_resolution=false", "ssao.half_resolution=true"}) {
+    const auto m = measureAo("contact", "ssao", with(kGrazing, {extra}), 128, 0);
+    EXPECT_EQ(m.glErrors, 0);
+    const double fraction = test::fractionAtLeast(m.ao, 0.95f);
+    std::printf("grazing floor, %s: %.4f of the floor at ao >= 0.95\n", extra, fraction);
+    EXPECT_GE(fraction, 0.98) << extra;
+    EXPECT_TRUE(test::backgroundIsZero(m.ao)) << "sky pixels are excluded (0, mask 0)";
+  }
+}
+
+TEST(Ssao, CreaseDarkensTowardsTheWallAndNotBeyondTheRadius) {
+  const auto m = measureAo("cornell", "ssao", kCrease, 128, 256);
+  ASSERT_EQ(m.glErrors, 0);
+  // Floor points at distance d from the wall: AO rises with d and is 1 beyond ao.radius (0.5).
+  std::vector<double> ao;
+  for (float d : {0.05f, 0.2f, 0.35f, 0.6f, 0.75f}) {
+    int x = 0, y = 0;
+    ASSERT_TRUE(projectToPixel(m.frame, {1.2f, 0.0f, -2.75f + d}, x, y)) << d;
+    ao.push_back(test::meanAround(m.ao, x, y, 1));
+    std::printf("crease: floor at %.2f from the wall: ao %.3f (reference %.3f)\n", d, ao.back(),
+                test::meanAround(m.reference, x, y, 1));
+  }
+  EXPECT_LT(ao[0], 0.85) << "a point next to the wall is occluded";
+  EXPECT_LT(ao[0], ao[1]);
+  EXPECT_LT(ao[1], ao[2] + 0.02);
+  EXPECT_GE(ao[3], 0.97) << "beyond ao.radius nothing occludes";
+  EXPECT_GE(ao[4], 0.97);
+  // Measured at the defaults: rmse 0.042 against 0.172 for no AO (0.25x; the classic form --
+  // sphere kernel, uniform lengths, no range check -- gives 0.098, 0.57x). The residual is the blur across the
+  // crease's last pixels and the height-field test; 0.4x keeps margin for a 256-spp reference
+  // and fails if the crease loses its occlusion or the floor beyond the radius darkens.
+  EXPECT_LT(m.metrics.rmse, 0.4 * m.noAo.rmse);
+  EXPECT_EQ(m.metrics.nanCount, 0u);
+}
+
+TEST(Ssao, ErrorOnCornellDecreasesWithSampleCount) {
+  // Blur off: the per-pixel estimator's variance is what the sample count buys down.
+  std::vector<double> rmse;
+  for (int samples : {4, 16, 64}) {
+    const auto m =
+        measureAo("cornell", "ssao", {"ssao.blur=false", "ssao.samples=" + std::to_string(samples)}, 96, 256);
+    rmse.push_back(m.metrics.rmse);
+  }
+  EXPECT_LT(rmse[1], rmse[0]);
+  EXPECT_LT(rmse[2], rmse[1]);
+}
+
+TEST(Ssao, DepthAwareUpsamplingBeatsNearest) {
+  // Half resolution, blur off: the stage output (depth-aware upsampling of ao.raw) against the
+  // ssao.raw view (the same texels, nearest-upsampled). Measured at 128x128: cornell 0.0705
+  // against 0.0797, contact 0.0295 against 0.0485 -- nearest smears each texel across
+  // silhouettes and creases.
+  for (const char* scene : {"cornell", "contact"}) {
+    const auto m = measureAo(scene, "ssao", {"ssao.half_resolution=true", "ssao.blur=false"}, 128, 256);
+    TestRender r = renderTestFrame(m.frame, {"ssao.raw"});
+    const Metrics nearest = computeMetrics(m.reference, r.renderer->readAov("ssao.raw"));
+    std::printf("%s half resolution: depth-aware %.4f, nearest %.4f\n", scene, m.metrics.rmse, nearest.rmse);
+    EXPECT_LT(m.metrics.rmse, 0.95 * nearest.rmse) << scene;
+  }
+}
+
+TEST(Ssao, AoScalesOnlyAmbientLight) {
+  // color(no AO) - color(ssao) = ambient * diffuse albedo * (1 - ao) on every surface pixel:
+  // cornell has no metals, no material occlusion and no indirect technique, so this is the only
+  // term AO may change; direct light must be untouched.
+  TestFrame plain = makeTestFrame("cornell", "", {}, 64, 64);
+  TestRender a = renderTestFrame(plain, {"color", "albedo"});
+  const Image without = a.renderer->readAov("color");
+  const Image albedo = a.renderer->readAov("albedo");
+  TestFrame f = makeTestFrame("cornell", "ssao", {}, 64, 64);
+  TestRender b = renderTestFrame(f, {"color", "ao"});
+  const Image withAo = b.renderer->readAov("color");
+  const Image ao = b.renderer->readAov("ao");
+  const glm::vec3 ambient = f.scene.ambient;
+  double worst = 0.0, darkened = 0.0;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      if (ao.mask[std::size_t(y) * 64 + x] < 0.5f) continue;
+      for (int c = 0; c < 3; ++c) {
+        const double expected = ambient[c] * albedo.at(x, y, c) * (1.0 - ao.at(x, y, 0));
+        const double delta = without.at(x, y, c) - withAo.at(x, y, c);
+        // fp16 color: relative rounding 2^-11 of values up to about 4.
+        worst = std::max(worst, std::abs(delta - expected) - 1e-3 * without.at(x, y, c));
+        darkened = std::max(darkened, delta);
+      }
+    }
+  EXPECT_LT(worst, 1e-3);
+  EXPECT_GT(darkened, 0.005) << "the AO must darken the ambient term somewhere";
+}
+
+TEST(Ssao, ExtremesAreFiniteAndExcludeSky) {
+  const std::vector<std::vector<std::string>> cases = {
+      with(kGrazing, {"ao.radius=0.01"}),
+      with(kGrazing, {"ao.radius=10"}),
+      {"ao.radius=10", "ssao.half_resolution=true"},
+      // The camera 0.0005 from the left wall, looking nearly along it: the wall enters the view
+      // nearer than the near plane (0.01 here), which cuts it at the left edge.
+      {"camera.position=-2.7495,1,1", "camera.target=-2.6,1,-2.75"},
+      // The camera 0.02 above the floor, looking along it.
+      {"camera.position=0,0.02,2", "camera.target=0,0.02,-2"},
+  };
+  for (const auto& sets : cases) {
+    const auto m = measureAo("cornell", "ssao", sets, 64, 0);
+    EXPECT_EQ(m.glErrors, 0);
+    EXPECT_EQ(test::nonFiniteCount(m.ao), 0u) << sets.front();
+    for (std::size_t i = 0; i < m.ao.pixelCount(); ++i) {
+      ASSERT_GE(m.ao.pixels[i], 0.0f);
+      ASSERT_LE(m.ao.pixels[i], 1.0f);
+    }
+    EXPECT_TRUE(test::backgroundIsZero(m.ao));
+  }
+  // ao.radius near 0: nothing can occlude within it.
+  const auto tiny = measureAo("cornell", "ssao", {"ao.radius=0.01"}, 64, 0);
+  EXPECT_GE(test::fractionAtLeast(tiny.ao, 0.99f), 0.99);
+}
+
+TEST(Ssao, AoResourcesExistOnlyWhileActiveAndNeeded) {
+  auto aoBytes = [](const TestRender& r) {
+    std::size_t bytes = 0;
+    for (const auto& res : r.renderer->resources())
+      if (res.name.rfind("ao.", 0) == 0) bytes += res.bytes;
+    return bytes;
+  };
+  TestFrame none = makeTestFrame("cornell", "none", {}, 64, 64);
+  EXPECT_EQ(aoBytes(renderTestFrame(none, {"color"})), 0u);
+  TestFrame on = makeTestFrame("cornell", "ssao", {}, 64, 64);
+  const std::size_t fullBytes = aoBytes(renderTestFrame(on, {"color"}));
+  EXPECT_GT(fullBytes, 0u);
+  // Asking only for depth needs no AO: every ssao pass is culled and its textures released.
+  const TestRender depth = renderTestFrame(on, {"depth"});
+  EXPECT_EQ(aoBytes(depth), 0u);
+  for (const auto& p : depth.renderer->lastPasses())
+    EXPECT_TRUE(p.technique != "ssao" || !p.kept) << p.name;
+  // Half resolution holds a quarter of the AO-resolution textures.
+  TestFrame half = makeTestFrame("cornell", "ssao", {"ssao.half_resolution=true"}, 64, 64);
+  EXPECT_LT(aoBytes(renderTestFrame(half, {"color"})), fullBytes / 2);
+  EXPECT_EQ(aoBytes(renderTestFrame(none, {"color"})), 0u);
+}
+
+TEST(Ssao, DebugViewsRender) {
+  for (const char* half : {"ssao.half_resolution=false", "ssao.half_resolution=true"}) {
+    TestFrame f = makeTestFrame("cornell", "ssao", {half}, 64, 48);
+    TestRender r = renderTestFrame(f, {"ssao.raw", "ssao.blurred", "ssao.pattern", "ao"});
+    EXPECT_EQ(r.glErrors, 0);
+    const Image raw = r.renderer->readAov("ssao.raw");
+    const Image blurred = r.renderer->readAov("ssao.blurred");
+    const Image pattern = r.renderer->readAov("ssao.pattern");
+    const Image ao = r.renderer->readAov("ao");
+    EXPECT_EQ(raw.width, 64);
+    EXPECT_EQ(pattern.channels, 3);
+    // The blurred view is the stage output.
+    for (std::size_t i = 0; i < ao.pixelCount(); ++i)
+      ASSERT_NEAR(blurred.pixels[i], ao.pixels[i], 1e-3);
+    // The pattern view marks samples: some pixel is pure green or red.
+    int marks = 0;
+    for (std::size_t i = 0; i < pattern.pixelCount(); ++i)
+      if (pattern.pixels[i * 3 + 2] == 0.0f &&
+          std::abs(pattern.pixels[i * 3] + pattern.pixels[i * 3 + 1] - 1.0f) < 1e-4f)
+        ++marks;
+    EXPECT_GT(marks, 0) << half;
+  }
+}
+
+} // namespace
+} // namespace rtlab
