@@ -27,6 +27,32 @@ struct AoMeasurement {
 AoMeasurement measureAo(const std::string& scene, const std::string& technique, const std::vector<std::string>& sets,
                         int size, int spp);
 
+// Views of issue 6 set with camera.*. kGrazingView: contact's ground (y = 0, |x|,|z| <= 6) from
+// 0.3 above it, looking along -z at the ground's far edge: only ground (down to a few degrees of
+// grazing) and sky are in view. kCreaseView: cornell's floor (y = 0) meeting the back wall
+// (z = -2.75) at x = 1.2, where the nearest block and side wall are more than 1 away.
+inline const std::vector<std::string> kGrazingView = {"camera.position=2.5,0.3,-2", "camera.target=2.5,0,-6"};
+inline const std::vector<std::string> kCreaseView = {"camera.position=1.2,1.3,-0.8", "camera.target=1.2,0.2,-2.75"};
+
+// a followed by b.
+std::vector<std::string> joined(std::vector<std::string> a, const std::vector<std::string>& b);
+
+// The technique's ao on kGrazingView, once per entry of `variants` (a set added to the view):
+// at least 98% of the floor at ao >= 0.95, no GL error, sky pixels 0 with mask 0.
+void expectGrazingFloorClear(const std::string& technique, const std::vector<std::string>& variants);
+
+// ao around the floor points of kCreaseView at distances 0.05, 0.2, 0.35, 0.6, 0.75 from the
+// wall (ao.radius is 0.5 there), each printed beside the reference.
+std::vector<double> creaseProfile(const AoMeasurement& m);
+
+// Each case (sets on cornell, 64x64) renders finite ao in [0, 1] without GL errors and with sky
+// pixels 0; and ao.radius = 0.01 leaves at least 99% of the surface at ao >= 0.99.
+void expectExtremesFinite(const std::string& technique, const std::vector<std::vector<std::string>>& cases);
+
+// The debug views <technique>.raw, .blurred and .pattern render at full and half resolution on
+// cornell (64x48, with `sets`): blurred equals the stage output, and the pattern marks taps.
+void expectDebugViewsRender(const std::string& technique, const std::vector<std::string>& sets);
+
 // Mean of a one-channel image over the (2r+1)^2 pixels around (x, y) that are surface pixels;
 // -1 if none.
 double meanAround(const Image& image, int x, int y, int r);

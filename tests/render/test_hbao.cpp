@@ -13,46 +13,24 @@
 namespace rtlab {
 namespace {
 
+using test::joined;
+using test::kCreaseView;
+using test::kGrazingView;
 using test::measureAo;
-
-// contact's ground (y = 0, |x|,|z| <= 6) from 0.3 above it, looking along -z at the ground's far
-// edge: only ground (down to a few degrees of grazing) and sky are in view.
-const std::vector<std::string> kGrazing = {"camera.position=2.5,0.3,-2", "camera.target=2.5,0,-6"};
-// cornell's floor (y = 0) meeting the back wall (z = -2.75) at x = 1.2, where the nearest block
-// and side wall are more than 1 away.
-const std::vector<std::string> kCrease = {"camera.position=1.2,1.3,-0.8", "camera.target=1.2,0.2,-2.75"};
-
-std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
 
 TEST(Hbao, GrazingFloorHasNoFalseOcclusion) {
   // Taps are placed on the plane of the texel they fall in (not at its centre), so a flat floor
   // gives horizons exactly in its tangent plane, down to grazing angles, without relying on the
   // angle bias; checked with the bias at 0 too.
-  for (const char* extra : {"hbao.half_resolution=false", "hbao.half_resolution=true", "hbao.angle_bias=0"}) {
-    const auto m = measureAo("contact", "hbao", with(kGrazing, {extra}), 128, 0);
-    EXPECT_EQ(m.glErrors, 0);
-    const double fraction = test::fractionAtLeast(m.ao, 0.95f);
-    std::printf("grazing floor, %s: %.4f of the floor at ao >= 0.95\n", extra, fraction);
-    EXPECT_GE(fraction, 0.98) << extra;
-    EXPECT_TRUE(test::backgroundIsZero(m.ao)) << "sky pixels are excluded (0, mask 0)";
-  }
+  test::expectGrazingFloorClear("hbao",
+                                {"hbao.half_resolution=false", "hbao.half_resolution=true", "hbao.angle_bias=0"});
 }
 
 TEST(Hbao, CreaseDarkensTowardsTheWallAndNotBeyondTheRadius) {
-  const auto m = measureAo("cornell", "hbao", kCrease, 128, 256);
+  const auto m = measureAo("cornell", "hbao", kCreaseView, 128, 256);
   ASSERT_EQ(m.glErrors, 0);
   // Floor points at distance d from the wall: AO rises with d and is 1 beyond ao.radius (0.5).
-  std::vector<double> ao;
-  for (float d : {0.05f, 0.2f, 0.35f, 0.6f, 0.75f}) {
-    int x = 0, y = 0;
-    ASSERT_TRUE(projectToPixel(m.frame, {1.2f, 0.0f, -2.75f + d}, x, y)) << d;
-    ao.push_back(test::meanAround(m.ao, x, y, 1));
-    std::printf("crease: floor at %.2f from the wall: ao %.3f (reference %.3f)\n", d, ao.back(),
-                test::meanAround(m.reference, x, y, 1));
-  }
+  const std::vector<double> ao = test::creaseProfile(m);
   EXPECT_LT(ao[0], 0.85) << "a point next to the wall is occluded";
   EXPECT_LT(ao[0], ao[1]);
   EXPECT_LT(ao[1], ao[2] + 0.02);
@@ -112,52 +90,21 @@ TEST(Hbao, SolidAngleIntegralIsBiasedAgainstTheCosineReference) {
 
 TEST(Hbao, ExtremesAreFiniteAndExcludeSky) {
   const std::vector<std::vector<std::string>> cases = {
-      with(kGrazing, {"ao.radius=0.01"}),
-      with(kGrazing, {"ao.radius=10"}),
+      joined(kGrazingView, {"ao.radius=0.01"}),
+      joined(kGrazingView, {"ao.radius=10"}),
       {"ao.radius=10", "hbao.half_resolution=true"},
       {"ao.radius=10", "hbao.max_radius_px=1024", "hbao.directions=1", "hbao.steps=1"},
       {"hbao.angle_bias=60", "hbao.attenuation=1", "hbao.integral=solid_angle"},
       // The camera 0.02 above the floor, below the near plane's reach: the floor is cut by it.
       {"camera.position=0,0.02,2", "camera.target=0,0.02,-2"},
   };
-  for (const auto& sets : cases) {
-    const auto m = measureAo("cornell", "hbao", sets, 64, 0);
-    EXPECT_EQ(m.glErrors, 0);
-    EXPECT_EQ(test::nonFiniteCount(m.ao), 0u) << sets.front();
-    for (std::size_t i = 0; i < m.ao.pixelCount(); ++i) {
-      ASSERT_GE(m.ao.pixels[i], 0.0f);
-      ASSERT_LE(m.ao.pixels[i], 1.0f);
-    }
-    EXPECT_TRUE(test::backgroundIsZero(m.ao));
-  }
-  // ao.radius near 0 projects below one pixel: nothing can occlude within it.
-  const auto tiny = measureAo("cornell", "hbao", {"ao.radius=0.01"}, 64, 0);
-  EXPECT_GE(test::fractionAtLeast(tiny.ao, 0.99f), 0.99);
+  test::expectExtremesFinite("hbao", cases);
 }
 
 TEST(Hbao, DebugViewsRender) {
-  for (const char* half : {"hbao.half_resolution=false", "hbao.half_resolution=true"}) {
-    // ao.radius 2 spans a few pixels even at half resolution of this small frame (0.5 would fall
-    // within the centre's own texel there, and the estimator would take no tap).
-    TestFrame f = makeTestFrame("cornell", "hbao", {half, "ao.radius=2"}, 64, 48);
-    TestRender r = renderTestFrame(f, {"hbao.raw", "hbao.blurred", "hbao.pattern", "ao"});
-    EXPECT_EQ(r.glErrors, 0);
-    const Image raw = r.renderer->readAov("hbao.raw");
-    const Image blurred = r.renderer->readAov("hbao.blurred");
-    const Image pattern = r.renderer->readAov("hbao.pattern");
-    const Image ao = r.renderer->readAov("ao");
-    EXPECT_EQ(raw.width, 64);
-    EXPECT_EQ(pattern.channels, 3);
-    for (std::size_t i = 0; i < ao.pixelCount(); ++i)
-      ASSERT_NEAR(blurred.pixels[i], ao.pixels[i], 1e-3) << "the blurred view is the stage output";
-    // The pattern view marks the centre pixel's taps: some pixel is pure green or red.
-    int marks = 0;
-    for (std::size_t i = 0; i < pattern.pixelCount(); ++i)
-      if (pattern.pixels[i * 3 + 2] == 0.0f &&
-          std::abs(pattern.pixels[i * 3] + pattern.pixels[i * 3 + 1] - 1.0f) < 1e-4f)
-        ++marks;
-    EXPECT_GT(marks, 0) << half;
-  }
+  // ao.radius 2 spans a few pixels even at half resolution of this small frame (0.5 would fall
+  // within the centre's own texel there, and the estimator would take no tap).
+  test::expectDebugViewsRender("hbao", {"ao.radius=2"});
 }
 
 } // namespace
