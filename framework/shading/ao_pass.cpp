@@ -216,4 +216,15 @@ void addAoPasses(FrameGraph& frame, const AoEstimatorPass& pass, AoKit& kit) {
   addEstimator(frame, pass, kit, l, t + ".view_pattern", aovResource(t + ".pattern"), true);
 }
 
+void AoTechnique::setup(FrameGraph& frame) {
+  addAoPasses(frame, estimator(frame.params()), m_kit);
+}
+
+TechniqueInfo AoTechnique::withAoChain(TechniqueInfo info) {
+  for (auto& p : aoFilterParams(info.id))
+    info.params.push_back(std::move(p));
+  info.debugViews = aoDebugViews(info.id);
+  return info;
+}
+
 } // namespace rtlab

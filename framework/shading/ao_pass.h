@@ -13,12 +13,14 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rtlab {
 
 class FrameGraph;
 struct PassContext;
+class ParamSet;
 
 namespace aores {
 inline const std::string kView = "ao.view";       // xyz view-space shading normal, w linear depth (0 = sky)
@@ -62,5 +64,28 @@ private:
 // depth-aware upsampling into "ao" at half resolution (at full resolution the last of estimator
 // and blur writes "ao" itself), and the three debug views (culled unless requested).
 void addAoPasses(FrameGraph& frame, const AoEstimatorPass& pass, AoKit& kit);
+
+// Base of the ao techniques: owns the AoKit and adds the whole chain (addAoPasses) around the
+// estimator that the derived class describes. A derived class declares its own parameters in
+// staticInfo() and returns withAoChain(info), which appends the shared filter parameters and
+// debug views, so that the registry and the instance see the same declarations.
+class AoTechnique : public Technique {
+public:
+  const TechniqueInfo& info() const override { return m_info; }
+  void setup(FrameGraph& frame) override;
+  std::size_t ownedBytes() const override { return m_kit.ownedBytes(); }
+
+protected:
+  explicit AoTechnique(TechniqueInfo info) : m_info(std::move(info)) {}
+  // The estimator pass for this frame's parameters.
+  virtual AoEstimatorPass estimator(const ParamSet& params) const = 0;
+  // `info` with aoFilterParams(info.id) appended to its parameters and aoDebugViews(info.id) as
+  // its debug views.
+  static TechniqueInfo withAoChain(TechniqueInfo info);
+
+private:
+  TechniqueInfo m_info;
+  AoKit m_kit;
+};
 
 } // namespace rtlab

@@ -18,8 +18,10 @@
 namespace rtlab {
 namespace {
 
-class Hbao final : public Technique {
+class Hbao final : public AoTechnique {
 public:
+  Hbao() : AoTechnique(staticInfo()) {}
+
   static TechniqueInfo staticInfo() {
     TechniqueInfo info;
     info.id = "hbao";
@@ -55,18 +57,15 @@ public:
             .withHelp("cosine: cosine-weighted horizon integral (the reference's ao); solid_angle: Bavoil's "
                       "1 - mean (sin h - sin t), with hbao.attenuation=1 the paper's form"),
     };
-    for (auto& p : aoFilterParams("hbao"))
-      info.params.push_back(p);
-    info.debugViews = aoDebugViews("hbao");
-    return info;
+    return withAoChain(std::move(info));
   }
-  const TechniqueInfo& info() const override { return m_info; }
 
-  void setup(FrameGraph& frame) override {
+private:
+  AoEstimatorPass estimator(const ParamSet& params) const override {
     AoEstimatorPass pass;
     pass.technique = "hbao";
     pass.fragment = "hbao/hbao.frag";
-    pass.defines = {frame.params().getEnumName("hbao.integral") == "cosine" ? "HBAO_INTEGRAL 1" : "HBAO_INTEGRAL 0"};
+    pass.defines = {params.getEnumName("hbao.integral") == "cosine" ? "HBAO_INTEGRAL 1" : "HBAO_INTEGRAL 0"};
     pass.bind = [](PassContext& ctx, gl::Program& p) {
       const float bias = glm::radians(ctx.params.getFloat("hbao.angle_bias"));
       p.set("uDirections", ctx.params.getInt("hbao.directions"))
@@ -77,13 +76,8 @@ public:
           .set("uAttenuation", ctx.params.getFloat("hbao.attenuation"))
           .set("uJitter", ctx.params.getBool("hbao.jitter"));
     };
-    addAoPasses(frame, pass, m_kit);
+    return pass;
   }
-  std::size_t ownedBytes() const override { return m_kit.ownedBytes(); }
-
-private:
-  TechniqueInfo m_info = staticInfo();
-  AoKit m_kit;
 };
 
 } // namespace

@@ -11,8 +11,10 @@
 namespace rtlab {
 namespace {
 
-class Ssao final : public Technique {
+class Ssao final : public AoTechnique {
 public:
+  Ssao() : AoTechnique(staticInfo()) {}
+
   static TechniqueInfo staticInfo() {
     TechniqueInfo info;
     info.id = "ssao";
@@ -45,19 +47,16 @@ public:
         ParamSpec::real("ssao.power", "Power", 1.0, 0.5, 4.0)
             .withHelp("Contrast: the result is raised to this power (1 keeps the estimate unbiased)"),
     };
-    for (auto& p : aoFilterParams("ssao"))
-      info.params.push_back(p);
-    info.debugViews = aoDebugViews("ssao");
-    return info;
+    return withAoChain(std::move(info));
   }
-  const TechniqueInfo& info() const override { return m_info; }
 
-  void setup(FrameGraph& frame) override {
+private:
+  AoEstimatorPass estimator(const ParamSet& params) const override {
     AoEstimatorPass pass;
     pass.technique = "ssao";
     pass.fragment = "ssao/ssao.frag";
-    if (frame.params().getEnumName("ssao.kernel") == "sphere") pass.defines.push_back("KERNEL_SPHERE");
-    const std::string& lengths = frame.params().getEnumName("ssao.distribution");
+    if (params.getEnumName("ssao.kernel") == "sphere") pass.defines.push_back("KERNEL_SPHERE");
+    const std::string& lengths = params.getEnumName("ssao.distribution");
     if (lengths == "center") pass.defines.push_back("LENGTH_CENTER");
     if (lengths == "shell") pass.defines.push_back("LENGTH_SHELL");
     pass.bind = [](PassContext& ctx, gl::Program& p) {
@@ -67,13 +66,8 @@ public:
           .set("uRangeCheck", ctx.params.getEnum("ssao.range_check"))
           .set("uRotate", ctx.params.getBool("ssao.rotate"));
     };
-    addAoPasses(frame, pass, m_kit);
+    return pass;
   }
-  std::size_t ownedBytes() const override { return m_kit.ownedBytes(); }
-
-private:
-  TechniqueInfo m_info = staticInfo();
-  AoKit m_kit;
 };
 
 } // namespace
