@@ -143,7 +143,6 @@ void addResolve(FrameGraph& frame, const std::string& name, const AoLayout& l, c
         b.read(aores::kView);
         b.read(res::kPosition);
         b.read(res::kNormal);
-        b.read(res::kGeometry);
         b.write(output, frameTexture(frame, aov ? GL_RGBA32F : GL_R16F));
       },
       [=](PassContext& ctx) {
@@ -154,8 +153,7 @@ void addResolve(FrameGraph& frame, const std::string& name, const AoLayout& l, c
         ctx.texture(source).bind(1);
         ctx.texture(res::kPosition).bind(2);
         ctx.texture(res::kNormal).bind(3);
-        ctx.texture(res::kGeometry).bind(4);
-        p.set("uSource", 1).set("uPosition", 2).set("uNormal", 3).set("uGeometry", 4).set("uView", ctx.view.view);
+        p.set("uSource", 1).set("uPosition", 2).set("uNormal", 3).set("uView", ctx.view.view);
         ctx.common.drawFullscreen();
       });
 }

@@ -3,15 +3,17 @@
 // upsampled (half): the 2x2 AO texels around the pixel, weighted bilinearly and by the bilateral
 // weight against the pixel's own surface, falling back to the texel of nearest depth where every
 // weight vanishes (a thin object seen by none of them). NEAREST takes the covering texel (the raw
-// debug view). Sky pixels get 0 (and mask 0 with OUTPUT_AOV, which writes RGBA32F value + mask).
+// debug view). Sky pixels get 0 (and mask 0 with OUTPUT_AOV, which writes RGBA32F value + mask):
+// they are told by their linear depth, which the G-buffer clears to 0 and every surface writes
+// as at least the near distance (one fetch fewer per pixel than reading gbuffer.geometry's
+// coverage: the pass runs at frame resolution and costs the most of the half-resolution chain).
 #include "common/ao_common.glsl"
 #include "common/bilateral.glsl"
 
 in vec2 vUv;
 uniform sampler2D uSource;   // AO resolution
-uniform sampler2D uPosition; // gbuffer.position (w linear depth)
+uniform sampler2D uPosition; // gbuffer.position (w linear depth, 0 on sky)
 uniform sampler2D uNormal;   // gbuffer.normal
-uniform sampler2D uGeometry; // gbuffer.geometry (w coverage)
 uniform mat4 uView;
 
 #ifdef OUTPUT_AOV
@@ -20,13 +22,13 @@ layout(location = 0) out vec4 oValue;
 layout(location = 0) out float oAo;
 #endif
 
-float resolveAo(ivec2 px) {
+// `depth`: the pixel's linear depth (> 0).
+float resolveAo(ivec2 px, float depth) {
   ivec2 base = px / uScale;
 #ifdef NEAREST
   return texelFetch(uSource, min(base, uAoSize - 1), 0).r;
 #else
   if (uScale == 1) return texelFetch(uSource, px, 0).r;
-  float depth = texelFetch(uPosition, px, 0).w;
   vec3 p = aoViewPosition(vec2(px) + 0.5, depth);
   vec3 n = normalize(mat3(uView) * texelFetch(uNormal, px, 0).xyz);
   ivec2 odd = px - base * uScale; // 0 on the texel's own pixel, 1 half-way to the next
@@ -51,8 +53,9 @@ float resolveAo(ivec2 px) {
 
 void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
-  bool surface = texelFetch(uGeometry, px, 0).w >= 0.5;
-  float ao = surface ? resolveAo(px) : 0.0;
+  float depth = texelFetch(uPosition, px, 0).w;
+  bool surface = depth > 0.0;
+  float ao = surface ? resolveAo(px, depth) : 0.0;
 #ifdef OUTPUT_AOV
   oValue = vec4(vec3(ao), surface ? 1.0 : 0.0);
 #else
