@@ -5,7 +5,6 @@
 #include "params/param_set.h"
 #include "shading/base_passes.h"
 #include "shading/gpu_common.h"
-#include "util/sample_patterns.h"
 
 #include <glm/glm.hpp>
 
@@ -182,14 +181,7 @@ std::vector<DebugView> aoDebugViews(const std::string& t) {
 }
 
 void AoKit::bindNoise(gl::Program& program) {
-  if (!m_noise) {
-    gl::TextureDesc d;
-    d.format = GL_R16F;
-    d.width = d.height = kNoiseSize;
-    m_noise = gl::Texture(d, "ao.blue-noise");
-    const std::vector<float> noise = blueNoise(kNoiseSize, 3);
-    glTextureSubImage2D(m_noise.id(), 0, 0, 0, kNoiseSize, kNoiseSize, GL_RED, GL_FLOAT, noise.data());
-  }
+  if (!m_noise) m_noise = makeBlueNoiseTexture(kNoiseSize, 3, "ao.blue-noise");
   m_noise.bind(1);
   program.set("uAoNoise", 1);
 }

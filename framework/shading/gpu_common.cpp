@@ -2,6 +2,7 @@
 
 #include "gl/program.h"
 #include "util/error.h"
+#include "util/sample_patterns.h"
 
 #include <vector>
 
@@ -77,6 +78,17 @@ gl::Framebuffer makeFramebuffer(const std::string& label, const std::vector<cons
   if (status != GL_FRAMEBUFFER_COMPLETE)
     throw Error(ExitCode::Internal, "framebuffer '" + label + "' is incomplete (status 0x" + std::to_string(status) + ")");
   return fbo;
+}
+
+gl::Texture makeBlueNoiseTexture(int size, std::uint32_t seed, const std::string& label) {
+  gl::TextureDesc d;
+  d.format = GL_R16F;
+  d.width = d.height = size;
+  d.wrap = GL_REPEAT;
+  gl::Texture t(d, label);
+  const std::vector<float> noise = blueNoise(size, seed);
+  glTextureSubImage2D(t.id(), 0, 0, 0, size, size, GL_RED, GL_FLOAT, noise.data());
+  return t;
 }
 
 } // namespace rtlab

@@ -114,13 +114,7 @@ std::vector<glm::vec2> ShadowFilterKit::taps(Pattern pattern, int count) {
 
 void ShadowFilterKit::ensure() {
   if (m_noise) return;
-  gl::TextureDesc d;
-  d.format = GL_R16F;
-  d.width = d.height = kNoiseSize;
-  d.wrap = GL_REPEAT;
-  m_noise = gl::Texture(d, "blue-noise");
-  const std::vector<float> noise = blueNoise(kNoiseSize, 1);
-  glTextureSubImage2D(m_noise.id(), 0, 0, 0, kNoiseSize, kNoiseSize, GL_RED, GL_FLOAT, noise.data());
+  m_noise = makeBlueNoiseTexture(kNoiseSize, 1, "blue-noise");
   const float border[4] = {1, 1, 1, 1};
   m_linearCompare = gl::Sampler("shadow.linear-compare");
   m_raw = gl::Sampler("shadow.raw-depth");
