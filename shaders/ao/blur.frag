@@ -27,7 +27,7 @@ void main() {
     if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, uAoSize))) continue;
     vec4 v = texelFetch(uAoView, q, 0);
     float w = exp(-0.5 * float(i * i) / (sigma * sigma)) *
-              aoBilateralWeight(c.p, c.n, aoViewPosition(aoFullPixel(q), v.w), v.xyz, v.w);
+              aoBilateralWeight(c.p, c.n, aoTexelPosition(q, v.w), v.xyz, v.w);
     sum += w * texelFetch(uSource, q, 0).r;
     weight += w;
   }

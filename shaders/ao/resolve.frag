@@ -38,7 +38,7 @@ float resolveAo(ivec2 px, float depth) {
       ivec2 q = min(base + ivec2(i, j), uAoSize - 1);
       vec4 v = texelFetch(uAoView, q, 0);
       float value = texelFetch(uSource, q, 0).r;
-      float w = aoBilateralWeight(p, n, aoViewPosition(aoFullPixel(q), v.w), v.xyz, v.w);
+      float w = aoBilateralWeight(p, n, aoTexelPosition(q, v.w), v.xyz, v.w);
       sum += w * value;
       weight += w;
       float gap = v.w > 0.0 ? abs(v.w - depth) : 1e29;

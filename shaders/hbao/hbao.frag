@@ -22,7 +22,7 @@ uniform bool uJitter;        // per-pixel rotation of the directions and offset 
 // angles would tilt them tens of degrees out of the tangent plane. Where the ray nearly grazes
 // that plane the texel's own point is used.
 vec3 surfaceThrough(vec2 q, ivec2 tap, vec4 texel) {
-  vec3 stored = aoViewPosition(aoFullPixel(tap), texel.w);
+  vec3 stored = aoTexelPosition(tap, texel.w);
   vec3 ray = aoViewPosition(q, 1.0);
   float denom = dot(ray, texel.xyz);
   if (abs(denom) < 1e-2 * length(ray)) return stored;

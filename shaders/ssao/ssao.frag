@@ -58,7 +58,7 @@ float aoEvaluate(ivec2 px, AoSurface s) {
         if (uRangeCheck == 1) {
           occlusion = smoothstep(0.0, 1.0, uRadius / max(abs(s.depth - stored), 1e-4));
         } else if (uRangeCheck == 2) {
-          vec3 occluder = aoViewPosition(aoFullPixel(tap), stored);
+          vec3 occluder = aoTexelPosition(tap, stored);
           occlusion = distance(occluder, s.p) <= uRadius ? 1.0 : 0.0;
         }
       }

@@ -31,11 +31,9 @@ vec2 aoFullPixel(ivec2 px) { return vec2(px * uScale) + 0.5; }
 // Linear depth stored at AO texel `px`; 0 on sky pixels.
 float aoStoredDepth(ivec2 px) { return texelFetch(uAoView, clamp(px, ivec2(0), uAoSize - 1), 0).w; }
 
-// View-space position of the surface stored at AO texel `px` (meaningless on sky: check depth).
-vec3 aoStoredPosition(ivec2 px) {
-  px = clamp(px, ivec2(0), uAoSize - 1);
-  return aoViewPosition(aoFullPixel(px), texelFetch(uAoView, px, 0).w);
-}
+// View-space position of the surface at AO texel `px` with its stored linear depth `depth`
+// (meaningless on sky: check depth > 0).
+vec3 aoTexelPosition(ivec2 px, float depth) { return aoViewPosition(aoFullPixel(px), depth); }
 
 // AO texels spanned by one scene unit at linear depth `depth` (vertical, perspective camera):
 // a world length L projects to about L * aoTexelsPerUnit(depth) texels.
@@ -48,7 +46,7 @@ bool aoSurface(ivec2 px, out AoSurface s) {
   vec4 v = texelFetch(uAoView, px, 0);
   s.depth = v.w;
   s.n = v.xyz;
-  s.p = aoViewPosition(aoFullPixel(px), v.w);
+  s.p = aoTexelPosition(px, v.w);
   return v.w > 0.0;
 }
 
