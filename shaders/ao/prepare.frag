@@ -2,13 +2,13 @@
 // ao.view: the view-space shading normal and linear view depth of the frame pixel that each AO
 // texel stands for (frame pixel k * uScale: the top-left of its 2x2 block at half resolution),
 // depth 0 on sky pixels. One fetch per estimator tap instead of three G-buffer reads.
+#include "common/ao_common.glsl"
+
 in vec2 vUv;
 uniform sampler2D uPosition;
 uniform sampler2D uNormal;
 uniform sampler2D uGeometry;
 uniform mat4 uView;
-uniform int uScale;
-uniform ivec2 uFullSize;
 
 layout(location = 0) out vec4 oView;
 
@@ -18,7 +18,5 @@ void main() {
     oView = vec4(0.0);
     return;
   }
-  vec3 n = texelFetch(uNormal, px, 0).xyz;
-  n = dot(n, n) > 0.0 ? normalize(mat3(uView) * n) : vec3(0.0, 0.0, 1.0);
-  oView = vec4(n, max(texelFetch(uPosition, px, 0).w, 1e-6));
+  oView = vec4(aoViewNormal(uView, texelFetch(uNormal, px, 0).xyz), max(texelFetch(uPosition, px, 0).w, 1e-6));
 }

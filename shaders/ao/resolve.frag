@@ -30,7 +30,7 @@ float resolveAo(ivec2 px, float depth) {
 #else
   if (uScale == 1) return texelFetch(uSource, px, 0).r;
   vec3 p = aoViewPosition(vec2(px) + 0.5, depth);
-  vec3 n = normalize(mat3(uView) * texelFetch(uNormal, px, 0).xyz);
+  vec3 n = aoViewNormal(uView, texelFetch(uNormal, px, 0).xyz);
   ivec2 odd = px - base * uScale; // 0 on the texel's own pixel, 1 half-way to the next
   float sum = 0.0, weight = 0.0, nearest = 1.0, nearestGap = 1e30;
   for (int j = 0; j <= odd.y; ++j)

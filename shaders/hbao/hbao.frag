@@ -20,13 +20,16 @@ uniform bool uJitter;        // per-pixel rotation of the directions and offset 
 // stored depth and normal): exact on planar surfaces, so the taps lie on the direction's line
 // rather than at texel centres up to half a texel off it, which on surfaces seen at grazing
 // angles would tilt them tens of degrees out of the tangent plane. Where the ray nearly grazes
-// that plane the texel's own point is used.
+// that plane, or meets it behind the camera (a ray on the plane's other side from the texel's
+// own: grazing planes in small frames, where q lies a large angle from the texel centre), the
+// texel's own point is used.
 vec3 surfaceThrough(vec2 q, ivec2 tap, vec4 texel) {
   vec3 stored = aoTexelPosition(tap, texel.w);
   vec3 ray = aoViewPosition(q, 1.0);
   float denom = dot(ray, texel.xyz);
   if (abs(denom) < 1e-2 * length(ray)) return stored;
-  return ray * (dot(stored, texel.xyz) / denom);
+  float t = dot(stored, texel.xyz) / denom; // ray depth of the intersection
+  return t > 0.0 ? ray * t : stored;
 }
 
 float aoEvaluate(ivec2 px, AoSurface s) {

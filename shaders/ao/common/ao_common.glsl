@@ -28,6 +28,13 @@ vec3 aoViewPosition(vec2 fullPx, float depth) {
 // Frame-pixel center that the AO-resolution texel `px` stands for (ao_pass prepare picks it).
 vec2 aoFullPixel(ivec2 px) { return vec2(px * uScale) + 0.5; }
 
+// The unit view-space shading normal from the G-buffer's world-space one (the view transform is
+// rigid); a zero normal (degenerate mesh data) is taken to face the camera instead of normalising
+// 0/0 into NaN.
+vec3 aoViewNormal(mat4 view, vec3 worldNormal) {
+  return dot(worldNormal, worldNormal) > 0.0 ? normalize(mat3(view) * worldNormal) : vec3(0.0, 0.0, 1.0);
+}
+
 // Linear depth stored at AO texel `px`; 0 on sky pixels.
 float aoStoredDepth(ivec2 px) { return texelFetch(uAoView, clamp(px, ivec2(0), uAoSize - 1), 0).w; }
 
