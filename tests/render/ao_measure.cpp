@@ -70,6 +70,15 @@ std::vector<double> creaseProfile(const AoMeasurement& m) {
   return ao;
 }
 
+void expectCreaseShape(const AoMeasurement& m, double beyondRadius) {
+  const std::vector<double> ao = creaseProfile(m);
+  EXPECT_LT(ao[0], 0.85) << "a point next to the wall is occluded";
+  EXPECT_LT(ao[0], ao[1]);
+  EXPECT_LT(ao[1], ao[2] + 0.02);
+  EXPECT_GE(ao[3], beyondRadius) << "beyond ao.radius nothing occludes";
+  EXPECT_GE(ao[4], beyondRadius);
+}
+
 void expectExtremesFinite(const std::string& technique, const std::vector<std::vector<std::string>>& cases) {
   for (const auto& sets : cases) {
     const auto m = measureAo("cornell", technique, sets, 64, 0);

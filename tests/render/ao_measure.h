@@ -45,6 +45,11 @@ void expectGrazingFloorClear(const std::string& technique, const std::vector<std
 // wall (ao.radius is 0.5 there), each printed beside the reference.
 std::vector<double> creaseProfile(const AoMeasurement& m);
 
+// The crease's shape in creaseProfile(m): occluded next to the wall (below 0.85), rising with the
+// distance (up to 0.02 of noise between the 2nd and 3rd points), and at least `beyondRadius` at
+// the two points beyond ao.radius.
+void expectCreaseShape(const AoMeasurement& m, double beyondRadius);
+
 // Each case (sets on cornell, 64x64) renders finite ao in [0, 1] without GL errors and with sky
 // pixels 0; and ao.radius = 0.01 leaves at least 99% of the surface at ao >= 0.99.
 void expectExtremesFinite(const std::string& technique, const std::vector<std::vector<std::string>>& cases);
