@@ -19,8 +19,6 @@
 #define HBAO_INTEGRAL 1
 #endif
 
-const float kHalfPi = 1.57079632679490;
-
 // An angle with its cosine and sine (the march works with cosines and takes an acos only when a
 // tap raises the horizon).
 struct Angle {
