@@ -141,7 +141,6 @@ void addResolve(FrameGraph& frame, const std::string& name, const AoLayout& l, c
         b.read(source);
         b.read(aores::kView);
         b.read(res::kPosition);
-        b.read(res::kNormal);
         b.write(output, frameTexture(frame, aov ? GL_RGBA32F : GL_R16F));
       },
       [=](PassContext& ctx) {
@@ -151,8 +150,7 @@ void addResolve(FrameGraph& frame, const std::string& name, const AoLayout& l, c
         bindAoCommon(ctx, p, l);
         ctx.texture(source).bind(1);
         ctx.texture(res::kPosition).bind(2);
-        ctx.texture(res::kNormal).bind(3);
-        p.set("uSource", 1).set("uPosition", 2).set("uNormal", 3).set("uView", ctx.view.view);
+        p.set("uSource", 1).set("uPosition", 2);
         ctx.common.drawFullscreen();
       });
 }

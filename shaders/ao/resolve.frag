@@ -1,20 +1,18 @@
 #version 450 core
 // The ao stage output at frame resolution: the AO-resolution result copied (full resolution) or
-// upsampled (half): the 2x2 AO texels around the pixel, weighted bilinearly and by the bilateral
-// weight against the pixel's own surface, falling back to the texel of nearest depth where every
-// weight vanishes (a thin object seen by none of them). NEAREST takes the covering texel (the raw
-// debug view). Sky pixels get 0 (and mask 0 with OUTPUT_AOV, which writes RGBA32F value + mask):
-// they are told by their linear depth, which the G-buffer clears to 0 and every surface writes
-// as at least the near distance (one fetch fewer per pixel than reading gbuffer.geometry's
-// coverage: the pass runs at frame resolution and costs the most of the half-resolution chain).
+// upsampled (half): the 2x2 AO texels around the pixel, weighted bilinearly and by the distance
+// of the pixel's point from each texel's tangent plane (aoPlaneWeight in bilateral.glsl), falling
+// back to the texel of nearest depth where every weight vanishes (a thin object seen by none of
+// them). NEAREST takes the covering texel (the raw debug view). Sky pixels get 0 (and mask 0 with
+// OUTPUT_AOV, which writes RGBA32F value + mask). The pass runs at frame resolution, the costliest
+// of the half-resolution chain, so it reads one G-buffer texel per pixel: the linear depth, which
+// is 0 exactly on sky pixels (cleared to 0; every surface lies at least the near distance away).
 #include "common/ao_common.glsl"
 #include "common/bilateral.glsl"
 
 in vec2 vUv;
 uniform sampler2D uSource;   // AO resolution
 uniform sampler2D uPosition; // gbuffer.position (w linear depth, 0 on sky)
-uniform sampler2D uNormal;   // gbuffer.normal
-uniform mat4 uView;
 
 #ifdef OUTPUT_AOV
 layout(location = 0) out vec4 oValue;
@@ -30,7 +28,6 @@ float resolveAo(ivec2 px, float depth) {
 #else
   if (uScale == 1) return texelFetch(uSource, px, 0).r;
   vec3 p = aoViewPosition(vec2(px) + 0.5, depth);
-  vec3 n = aoViewNormal(uView, texelFetch(uNormal, px, 0).xyz);
   ivec2 odd = px - base * uScale; // 0 on the texel's own pixel, 1 half-way to the next
   float sum = 0.0, weight = 0.0, nearest = 1.0, nearestGap = 1e30;
   for (int j = 0; j <= odd.y; ++j)
@@ -38,7 +35,7 @@ float resolveAo(ivec2 px, float depth) {
       ivec2 q = min(base + ivec2(i, j), uAoSize - 1);
       vec4 v = texelFetch(uAoView, q, 0);
       float value = texelFetch(uSource, q, 0).r;
-      float w = aoBilateralWeight(p, n, aoTexelPosition(q, v.w), v.xyz, v.w);
+      float w = aoPlaneWeight(aoTexelPosition(q, v.w), v.xyz, v.w, p);
       sum += w * value;
       weight += w;
       float gap = v.w > 0.0 ? abs(v.w - depth) : 1e29;
