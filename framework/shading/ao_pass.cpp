@@ -205,7 +205,9 @@ void addAoPasses(FrameGraph& frame, const AoEstimatorPass& pass, AoKit& kit) {
 }
 
 void AoTechnique::setup(FrameGraph& frame) {
-  addAoPasses(frame, estimator(frame.params()), m_kit);
+  AoEstimatorPass pass = estimator(frame.params());
+  pass.technique = m_info.id;
+  addAoPasses(frame, pass, m_kit);
 }
 
 TechniqueInfo AoTechnique::withAoChain(TechniqueInfo info) {

@@ -35,7 +35,7 @@ constexpr int kAoFirstFreeUnit = 2;
 
 // The estimator pass of one ao technique.
 struct AoEstimatorPass {
-  std::string technique; // "ssao"
+  std::string technique; // "ssao" (AoTechnique fills it in from its info's id)
   std::string fragment;  // "ssao/ssao.frag": includes ../ao/common/ao_common.glsl,
                          // defines aoEvaluate(), then includes ../ao/common/ao_main.glsl
   std::vector<std::string> defines;
@@ -77,7 +77,7 @@ public:
 
 protected:
   explicit AoTechnique(TechniqueInfo info) : m_info(std::move(info)) {}
-  // The estimator pass for this frame's parameters.
+  // The estimator pass for this frame's parameters (`technique` need not be set).
   virtual AoEstimatorPass estimator(const ParamSet& params) const = 0;
   // `info` with aoFilterParams(info.id) appended to its parameters and aoDebugViews(info.id) as
   // its debug views.

@@ -63,7 +63,6 @@ public:
 private:
   AoEstimatorPass estimator(const ParamSet& params) const override {
     AoEstimatorPass pass;
-    pass.technique = "hbao";
     pass.fragment = "hbao/hbao.frag";
     pass.defines = {params.getEnumName("hbao.integral") == "cosine" ? "HBAO_INTEGRAL 1" : "HBAO_INTEGRAL 0"};
     pass.bind = [](PassContext& ctx, gl::Program& p) {

@@ -53,7 +53,6 @@ public:
 private:
   AoEstimatorPass estimator(const ParamSet& params) const override {
     AoEstimatorPass pass;
-    pass.technique = "ssao";
     pass.fragment = "ssao/ssao.frag";
     if (params.getEnumName("ssao.kernel") == "sphere") pass.defines.push_back("KERNEL_SPHERE");
     const std::string& lengths = params.getEnumName("ssao.distribution");
