@@ -1,6 +1,8 @@
 #include "viewer/window/reference_view.h"
 
+#include "frame/stages.h"
 #include "reference/live_metrics.h"
+#include "reference/reference.h"
 #include "scene/scene_params.h"
 #include "util/error.h"
 #include "viewer/window/frame_display.h"
@@ -8,10 +10,9 @@
 namespace rtlab {
 
 std::string referenceAovFor(const ViewerState& state) {
-  const std::string& v = state.view.aov;
-  if (state.view.mode != DebugMode::Off && (v == "visibility" || v == "ao" || v == "indirect")) return v;
-  for (const auto& [stage, aov] : {std::pair{"shadow", "visibility"}, {"ao", "ao"}, {"indirect", "indirect"}})
-    if (!state.selection.activeIn(stage).empty()) return aov;
+  if (state.view.mode != DebugMode::Off && isReferenceAov(state.view.aov)) return state.view.aov;
+  for (const StageInfo& stage : stages()) // in frame order: shadow, ao, indirect
+    if (isReferenceAov(stage.output) && !state.selection.activeIn(stage.id).empty()) return stage.output;
   return "visibility";
 }
 
