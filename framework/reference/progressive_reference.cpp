@@ -211,6 +211,11 @@ void ProgressiveReference::stop() {
   m_state->idle.wait(lock, [&] { return !m_state->busy; });
 }
 
+void ProgressiveReference::cancel() {
+  std::lock_guard lock(m_state->mutex);
+  m_state->cancelLocked();
+}
+
 bool ProgressiveReference::latest(ProgressiveSnapshot& out) const {
   std::lock_guard lock(m_state->mutex);
   const State& s = *m_state;

@@ -71,6 +71,9 @@ public:
   // Cancels the job in progress (if any) and waits for the worker to stop: at most one tile, or
   // the BVH build in progress (Embree cannot interrupt it).
   void stop();
+  // Cancels the job in progress (if any) without waiting: the worker stops within one tile (or
+  // after the BVH build in progress) on its own. running() is false from now on.
+  void cancel();
 
   // If a batch of the current generation completed since `out` was filled (another generation,
   // or more samples), copies the current mean into `out` and returns true; otherwise leaves `out`
