@@ -166,3 +166,24 @@ TEST(ViewerActions, BookmarksApplyTechniquesParametersViewAndCompare) {
   EXPECT_NE(s.status.find("soft, wide"), std::string::npos);
   checkCaught(catchError([&] { bookmarkAction(s, 1); }), ExitCode::Usage, {"bookmark 1"});
 }
+
+TEST(ViewerActions, ABookmarkThatFailsPartWayChangesNothing) {
+  // A bookmark of another scene is validated at start without that scene; here its scene loads,
+  // its techniques apply, and then a value is out of range: nothing of it may stay.
+  ViewerState s = contactState();
+  selectTechniqueAction(s, "shadow", "hard");
+  Bookmark b;
+  b.name = "cornell, too wide";
+  b.scene = "cornell";
+  b.techniques = std::vector<std::string>{"soft"};
+  b.params = {{"soft.width", 99.0}};
+  s.bookmarks = {b};
+  const auto before = s.params.toJson();
+  const unsigned long generation = s.sceneGeneration;
+  checkCaught(catchError([&] { bookmarkAction(s, 0); }), ExitCode::Usage, {"soft.width"});
+  EXPECT_EQ(s.sceneSpec, "contact");
+  EXPECT_EQ(s.sceneGeneration, generation);
+  EXPECT_EQ(s.params.toJson(), before);
+  EXPECT_EQ(s.selection.ordered(), (std::vector<std::string>{"hard"}));
+  EXPECT_EQ(s.bookmark, -1);
+}
