@@ -88,7 +88,7 @@ public:
   // The last worker error (an exception from the tracer), empty when none; cleared by start().
   std::string error() const;
   // The prepared scene of the current job once its worker has built it (or the one start() was
-  // given); null before.
+  // given), also when the job was cancelled or stopped after the build began; null before.
   std::shared_ptr<const PreparedReferenceScene> preparedScene() const;
 
 private:
