@@ -80,13 +80,21 @@ void ReferenceView::restart(ViewerState& state, Renderer& renderer, unsigned see
     ProgressiveOptions options;
     options.seed = seed;
     options.aoRadius = state.params.getFloat("ao.radius");
-    Scene scene = state.scene;
-    applySceneParams(state.params, scene);
+    // A reused BVH needs only the lights and the camera: the meshes and textures are not copied
+    // for a restart after a camera or light change.
+    Scene view;
+    view.lights = state.scene.lights;
+    view.camera = state.scene.camera;
+    applySceneParams(state.params, view);
     auto prepared = m_reference.preparedScene();
-    if (prepared && m_sceneGeneration == state.sceneGeneration)
-      m_reference.start(prepared, scene, renderer.readSurfaces(), aov, options);
-    else
+    if (prepared && m_sceneGeneration == state.sceneGeneration) {
+      m_reference.start(prepared, view, renderer.readSurfaces(), aov, options);
+    } else {
+      Scene scene = state.scene;
+      scene.lights = std::move(view.lights);
+      scene.camera = view.camera;
       m_reference.start(scene, renderer.readSurfaces(), aov, options);
+    }
     m_sceneGeneration = state.sceneGeneration;
     m_active = true;
   } catch (const Error& e) {
