@@ -138,6 +138,18 @@ void cameraAction(ViewerState& state, const std::optional<glm::vec3>& position, 
   syncCameraFromParams(state);
 }
 
+void resetCameraAction(ViewerState& state) {
+  state.camera.reset();
+  syncCameraToParams(state);
+}
+
+void frameSceneAction(ViewerState& state) {
+  glm::vec3 lo, hi;
+  sceneBounds(state.scene, lo, hi);
+  state.camera.frame(lo, hi);
+  syncCameraToParams(state);
+}
+
 void viewAction(ViewerState& state, const nlohmann::json& fields) {
   const std::string where = "view";
   checkViewFields(fields, where);

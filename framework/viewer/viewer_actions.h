@@ -25,6 +25,10 @@ void resetParamAction(ViewerState& state, const std::string& key);
 // Moves the camera; each part optional. Values are checked against the camera.* keys.
 void cameraAction(ViewerState& state, const std::optional<glm::vec3>& position, const std::optional<glm::vec3>& target,
                   const std::optional<float>& fov);
+// The camera back to its home (the scene's camera, or --set camera.* at start) / framed on the
+// scene's bounds (keys F and R, and their panel buttons); the camera.* keys follow.
+void resetCameraAction(ViewerState& state);
+void frameSceneAction(ViewerState& state);
 // Applies a "view" object / a "compare" object (viewer/view_fields.h), fields optional.
 void viewAction(ViewerState& state, const nlohmann::json& fields);
 void compareAction(ViewerState& state, const nlohmann::json& fields);

@@ -167,6 +167,19 @@ TEST(ViewerActions, BookmarksApplyTechniquesParametersViewAndCompare) {
   checkCaught(catchError([&] { bookmarkAction(s, 1); }), ExitCode::Usage, {"bookmark 1"});
 }
 
+TEST(ViewerActions, FrameAndResetCameraMoveTheCameraKeysToo) {
+  ViewerState s = contactState();
+  const glm::vec3 home = s.params.getVec3("camera.position");
+  cameraAction(s, glm::vec3(30, 20, 30), glm::vec3(29, 19, 29), std::nullopt); // looking away
+  frameSceneAction(s);
+  const Bounds world = s.scene.worldBounds();
+  EXPECT_EQ(s.params.getVec3("camera.target"), world.center());
+  EXPECT_EQ(s.params.getVec3("camera.position"), s.camera.camera().position);
+  resetCameraAction(s);
+  EXPECT_EQ(s.params.getVec3("camera.position"), home);
+  EXPECT_EQ(s.camera.camera().position, home);
+}
+
 TEST(ViewerActions, ABookmarkThatFailsPartWayChangesNothing) {
   // A bookmark of another scene is validated at start without that scene; here its scene loads,
   // its techniques apply, and then a value is out of range: nothing of it may stay.
