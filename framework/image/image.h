@@ -35,6 +35,9 @@ enum class ImageFormat { Png, Exr, Pfm };
 
 // From the file extension (.png .exr .pfm, case-insensitive); throws Error(Usage) otherwise.
 ImageFormat imageFormatFromPath(const std::string& path);
+// For outputs that are PNG only (the viewer's screenshots): Error(Usage) "<what> must be a .png
+// file, got 'PATH'" unless the extension is .png (case-insensitive).
+void requirePngPath(const std::string& path, const std::string& what);
 
 // Writes atomically (util/atomic_file.h); throws Error(Output) naming the path on failure.
 // PNG: 8-bit, 1 channel -> gray, 3 -> RGB. EXR: 32-bit float, channels Y or R,G,B, plus A from the

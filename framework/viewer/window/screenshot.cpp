@@ -26,7 +26,7 @@ Image readWindow(int width, int height) {
 void writeScreenshot(const std::string& path, int width, int height) {
   // The command line and scripts check this before the window opens; the panel's path field and
   // F12 get here unchecked (writeImage would write display values into an .exr or .pfm).
-  if (imageFormatFromPath(path) != ImageFormat::Png) usageError("screenshot '" + path + "' must be a .png file");
+  requirePngPath(path, "screenshot");
   // The values are already display-encoded: stored unchanged.
   writeImage(path, readWindow(width, height), PngEncoding::Linear01);
 }
