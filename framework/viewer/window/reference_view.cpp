@@ -19,6 +19,10 @@ std::string referenceAovFor(const ViewerState& state) {
 void ReferenceView::stop(ViewerState& state) {
   if (m_active) m_reference.cancel();
   m_active = false;
+  if (m_texture) { // a restart would replace them: not kept while compare mode is off
+    m_texture.reset();
+    m_snapshot = ProgressiveSnapshot{};
+  }
   m_startedKey.clear();
   m_settlingKey.clear();
   m_metrics = {};
