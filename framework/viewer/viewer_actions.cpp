@@ -110,6 +110,15 @@ void selectTechniqueAction(ViewerState& state, const std::string& stage, const s
   state.techniquesChanged = true;
 }
 
+void setTechniqueActiveAction(ViewerState& state, const std::string& id, bool on) {
+  state.registry->get(id); // Error(Usage) naming an unknown id, also when switching off
+  if (on)
+    state.selection.activate(id);
+  else
+    state.selection.deactivate(id);
+  state.techniquesChanged = true;
+}
+
 void setParamAction(ViewerState& state, const std::string& key, const nlohmann::json& value) {
   ParamSet copy = state.params; // a camera key is checked with the scene before it is kept
   copy.setJson(key, value);

@@ -19,6 +19,9 @@ class TechniqueRegistry;
 void loadSceneAction(ViewerState& state, const std::string& spec);
 // Activates `id` in `stage` ("off": deactivates the stage's technique).
 void selectTechniqueAction(ViewerState& state, const std::string& stage, const std::string& id);
+// Switches one technique on or off by itself (a stack stage's checkbox; on in an exclusive stage
+// replaces the stage's technique). Error(Usage) for an unknown id.
+void setTechniqueActiveAction(ViewerState& state, const std::string& id, bool on);
 void setParamAction(ViewerState& state, const std::string& key, const nlohmann::json& value);
 void setParamValueAction(ViewerState& state, const std::string& key, const ParamValue& value);
 void resetParamAction(ViewerState& state, const std::string& key);

@@ -28,6 +28,8 @@ const TechniqueRegistry& registry() {
                         {{"hard.depth", 1, ""}}));
     t.add(fakeTechnique("soft", "shadow", {ParamSpec::real("soft.width", "Width", 1.0, 0.0, 8.0)}));
     t.add(fakeTechnique("occ", "ao", {ParamSpec::real("occ.strength", "Strength", 0.5, 0.0, 2.0)}));
+    t.add(fakeTechnique("grain", "post", {}));
+    t.add(fakeTechnique("vignette", "post", {}));
     return t;
   }();
   return r;
@@ -165,6 +167,19 @@ TEST(ViewerActions, BookmarksApplyTechniquesParametersViewAndCompare) {
   EXPECT_EQ(s.bookmark, 0);
   EXPECT_NE(s.status.find("soft, wide"), std::string::npos);
   checkCaught(catchError([&] { bookmarkAction(s, 1); }), ExitCode::Usage, {"bookmark 1"});
+}
+
+TEST(ViewerActions, StackTechniquesSwitchOnAndOffOneByOne) {
+  ViewerState s = contactState();
+  s.techniquesChanged = false;
+  setTechniqueActiveAction(s, "grain", true);
+  setTechniqueActiveAction(s, "vignette", true);
+  EXPECT_TRUE(s.techniquesChanged);
+  EXPECT_EQ(s.selection.ordered(), (std::vector<std::string>{"grain", "vignette"})); // a stack keeps both
+  setTechniqueActiveAction(s, "grain", false);
+  EXPECT_EQ(s.selection.ordered(), (std::vector<std::string>{"vignette"}));
+  checkCaught(catchError([&] { setTechniqueActiveAction(s, "nope", false); }), ExitCode::Usage, {"nope"});
+  EXPECT_EQ(s.selection.ordered(), (std::vector<std::string>{"vignette"}));
 }
 
 TEST(ViewerActions, FrameAndResetCameraMoveTheCameraKeysToo) {
