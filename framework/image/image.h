@@ -1,6 +1,7 @@
 // Float images: the one in-memory format for AOVs, references and comparisons.
 #pragma once
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,15 @@ struct Image {
   bool hasMask() const { return !mask.empty(); }
   std::size_t pixelCount() const { return std::size_t(width) * height; }
 };
+
+// The smallest and largest finite value over the valid pixels (mask > 0.5 where there is a mask)
+// and every channel; empty() when there is none. (png_io.cpp: the depth preview's range.)
+struct ValueRange {
+  float min = std::numeric_limits<float>::infinity();
+  float max = -std::numeric_limits<float>::infinity();
+  bool empty() const { return !(min <= max); }
+};
+ValueRange validRange(const Image& image);
 
 // How a PNG encodes an image (CONTRACT.md "Images and AOVs").
 enum class PngEncoding {

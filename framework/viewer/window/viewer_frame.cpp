@@ -96,23 +96,13 @@ DisplaySide ViewerFrame::aovSide(const std::string& aov) {
 void ViewerFrame::autoRange(ViewerState& state) {
   state.view.autoRangeRequested = false;
   if (state.view.mode == DebugMode::Off) return;
-  const Image image = m_renderer.readAov(state.view.aov);
-  float lo = INFINITY, hi = -INFINITY;
-  for (std::size_t i = 0; i < image.pixelCount(); ++i) {
-    if (image.hasMask() && image.mask[i] < 0.5f) continue; // background holds 0, not data
-    for (int c = 0; c < image.channels; ++c) {
-      const float v = image.pixels[i * std::size_t(image.channels) + std::size_t(c)];
-      if (!std::isfinite(v)) continue;
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
-  }
-  if (!(lo < hi)) {
+  const ValueRange range = validRange(m_renderer.readAov(state.view.aov)); // background holds 0, not data
+  if (!(range.min < range.max)) {
     state.status = "auto range: the view holds a single value";
     return;
   }
-  state.view.min = lo;
-  state.view.max = hi;
+  state.view.min = range.min;
+  state.view.max = range.max;
 }
 
 void ViewerFrame::takeSnapshot(ViewerState& state, const DisplaySide& side) {
