@@ -18,9 +18,16 @@ FrameOutputs ViewerFrame::outputsFor(ViewerState& state, bool reference, const s
   FrameOutputs outputs;
   outputs.displayColor = true;
   if (state.view.mode != DebugMode::Off) {
+    // Rendered only where draw(), a snapshot or the auto range uses it: the reference and
+    // difference views replace the full-screen debug view, and hide the picture-in-picture.
+    const bool referenceShown =
+        state.compare.mode == CompareMode::Reference || state.compare.mode == CompareMode::Difference;
+    const bool used = state.view.autoRangeRequested ||
+                      (state.view.mode == DebugMode::Full && (!referenceShown || state.snapshotRequested)) ||
+                      (state.view.mode == DebugMode::Pip && state.compare.mode == CompareMode::Off);
     try {
       m_renderer.checkAov(state.view.aov);
-      outputs.aovs.push_back(state.view.aov);
+      if (used) outputs.aovs.push_back(state.view.aov);
     } catch (const Error& e) {
       state.status = std::string(e.what()) + ": debug view off";
       state.view.mode = DebugMode::Off;
