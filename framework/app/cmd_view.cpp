@@ -45,7 +45,7 @@ int runView(int argc, char** argv) {
   const TechniqueRegistry& registry = TechniqueRegistry::instance();
   options.screenshot = args.get("--screenshot");
   if (!options.screenshot.empty()) {
-    if (imageFormatFromPath(options.screenshot) != ImageFormat::Png) usageError("--screenshot must be a .png file");
+    requirePngPath(options.screenshot, "--screenshot");
     checkOutputPath(options.screenshot);
   }
   options.bookmarksSource = args.get("--bookmarks");

@@ -1,6 +1,7 @@
 // Float images: the one in-memory format for AOVs, references and comparisons.
 #pragma once
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,15 @@ struct Image {
   std::size_t pixelCount() const { return std::size_t(width) * height; }
 };
 
+// The smallest and largest finite value over the valid pixels (mask > 0.5 where there is a mask)
+// and every channel; empty() when there is none. (png_io.cpp: the depth preview's range.)
+struct ValueRange {
+  float min = std::numeric_limits<float>::infinity();
+  float max = -std::numeric_limits<float>::infinity();
+  bool empty() const { return !(min <= max); }
+};
+ValueRange validRange(const Image& image);
+
 // How a PNG encodes an image (CONTRACT.md "Images and AOVs").
 enum class PngEncoding {
   Linear01,   // clamp to [0,1], linear (visibility, ao, albedo)
@@ -35,6 +45,9 @@ enum class ImageFormat { Png, Exr, Pfm };
 
 // From the file extension (.png .exr .pfm, case-insensitive); throws Error(Usage) otherwise.
 ImageFormat imageFormatFromPath(const std::string& path);
+// For outputs that are PNG only (the viewer's screenshots): Error(Usage) "<what> must be a .png
+// file, got 'PATH'" unless the extension is .png (case-insensitive).
+void requirePngPath(const std::string& path, const std::string& what);
 
 // Writes atomically (util/atomic_file.h); throws Error(Output) naming the path on failure.
 // PNG: 8-bit, 1 channel -> gray, 3 -> RGB. EXR: 32-bit float, channels Y or R,G,B, plus A from the

@@ -78,6 +78,10 @@ ImageFormat imageFormatFromPath(const std::string& path) {
   usageError("unsupported image format '" + path + "' (use .png, .exr or .pfm)");
 }
 
+void requirePngPath(const std::string& path, const std::string& what) {
+  if (lowerExtension(path) != ".png") usageError(what + " must be a .png file, got '" + path + "'");
+}
+
 void writeImage(const std::string& path, const Image& image, PngEncoding png) {
   const ImageFormat format = imageFormatFromPath(path);
   detail::validateImage(image, path);

@@ -33,33 +33,12 @@ std::uint8_t toByte(float v) {
   return std::uint8_t(std::lround(v * 255.0f));
 }
 
-struct Range {
-  float min = std::numeric_limits<float>::infinity();
-  float max = -std::numeric_limits<float>::infinity();
-  bool empty() const { return !(min <= max); }
-};
-
 bool isValidPixel(const Image& image, std::size_t pixel) {
   return image.mask.empty() || image.mask[pixel] > 0.5f;
 }
 
-Range validRange(const Image& image) {
-  Range range;
-  const std::size_t count = image.pixelCount();
-  for (std::size_t p = 0; p < count; ++p) {
-    if (!isValidPixel(image, p)) continue;
-    for (int c = 0; c < image.channels; ++c) {
-      const float v = image.pixels[p * image.channels + c];
-      if (!std::isfinite(v)) continue;
-      range.min = std::min(range.min, v);
-      range.max = std::max(range.max, v);
-    }
-  }
-  return range;
-}
-
 void normalizeRange(const Image& image, std::vector<std::uint8_t>& out) {
-  const Range range = validRange(image);
+  const ValueRange range = validRange(image);
   const std::size_t count = image.pixelCount();
   const int channels = image.channels;
   if (range.empty()) {
@@ -159,3 +138,21 @@ Image decodePng(const std::string& bytes, const std::string& path) {
 }
 
 } // namespace rtlab::detail
+
+namespace rtlab {
+
+ValueRange validRange(const Image& image) {
+  ValueRange range;
+  for (std::size_t p = 0; p < image.pixelCount(); ++p) {
+    if (!detail::isValidPixel(image, p)) continue;
+    for (int c = 0; c < image.channels; ++c) {
+      const float v = image.pixels[p * std::size_t(image.channels) + std::size_t(c)];
+      if (!std::isfinite(v)) continue;
+      range.min = std::min(range.min, v);
+      range.max = std::max(range.max, v);
+    }
+  }
+  return range;
+}
+
+} // namespace rtlab

@@ -81,8 +81,10 @@ void ProgressiveReference::State::run(Job& job) {
   if (!scene) scene = std::make_shared<const PreparedReferenceScene>(std::move(*job.scene));
   {
     std::lock_guard lock(mutex);
+    // The BVH does not depend on the view: one built for the last start() is kept even when its
+    // job was cancelled meanwhile (the camera moved during the build), so the restart reuses it.
+    if (generation == job.generation) prepared = scene;
     if (cancel.load()) return;
-    prepared = scene;
   }
   const reference::EstimatorContext ctx{scene->scene(), scene->tracer(), job.options.aoRadius, job.lights};
   const SurfaceData& surfaces = job.surfaces;
@@ -209,6 +211,11 @@ void ProgressiveReference::stop() {
   std::unique_lock lock(m_state->mutex);
   m_state->cancelLocked();
   m_state->idle.wait(lock, [&] { return !m_state->busy; });
+}
+
+void ProgressiveReference::cancel() {
+  std::lock_guard lock(m_state->mutex);
+  m_state->cancelLocked();
 }
 
 bool ProgressiveReference::latest(ProgressiveSnapshot& out) const {

@@ -71,6 +71,9 @@ public:
   // Cancels the job in progress (if any) and waits for the worker to stop: at most one tile, or
   // the BVH build in progress (Embree cannot interrupt it).
   void stop();
+  // Cancels the job in progress (if any) without waiting: the worker stops within one tile (or
+  // after the BVH build in progress) on its own. running() is false from now on.
+  void cancel();
 
   // If a batch of the current generation completed since `out` was filled (another generation,
   // or more samples), copies the current mean into `out` and returns true; otherwise leaves `out`
@@ -85,7 +88,7 @@ public:
   // The last worker error (an exception from the tracer), empty when none; cleared by start().
   std::string error() const;
   // The prepared scene of the current job once its worker has built it (or the one start() was
-  // given); null before.
+  // given), also when the job was cancelled or stopped after the build began; null before.
   std::shared_ptr<const PreparedReferenceScene> preparedScene() const;
 
 private:

@@ -90,22 +90,24 @@ bool drawValue(const ParamSpec& spec, ParamValue& value, const char* id) {
 
 } // namespace
 
-void helpMarker(const std::string& text) {
+bool helpMarkerHovered() {
   ImGui::SameLine();
   ImGui::TextDisabled("(?)");
-  if (ImGui::IsItemHovered()) {
-    ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
-    ImGui::TextUnformatted(text.c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::EndTooltip();
-  }
+  return ImGui::IsItemHovered();
+}
+
+void helpTooltip(const char* text) {
+  ImGui::BeginTooltip();
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+  ImGui::TextUnformatted(text);
+  ImGui::PopTextWrapPos();
+  ImGui::EndTooltip();
 }
 
 bool drawParamControl(const ParamSpec& spec, ParamValue& value) {
   ImGui::PushID(spec.key.c_str());
   ImGui::TextUnformatted(spec.label.c_str());
-  helpMarker(tooltipText(spec));
+  if (helpMarkerHovered()) helpTooltip(tooltipText(spec).c_str());
   bool changed = false;
   if (!(value == spec.def)) {
     ImGui::SameLine();

@@ -16,8 +16,14 @@ class ParamSet;
 // Draws the control for `spec` showing `value`. Returns true if the user changed it (the new,
 // in-range value is in `value`) or pressed reset (`value` is the default).
 bool drawParamControl(const ParamSpec& spec, ParamValue& value);
+// "(?)"; true while the mouse is over it (the caller then shows its text with helpTooltip, so a
+// text that must be built is built only then, not every frame).
+bool helpMarkerHovered();
+void helpTooltip(const char* text);
 // "(?)" with a tooltip.
-void helpMarker(const std::string& text);
+inline void helpMarker(const char* text) {
+  if (helpMarkerHovered()) helpTooltip(text);
+}
 
 // An edit made in a panel, applied by the caller through the viewer's actions.
 struct ParamEdit {

@@ -50,17 +50,9 @@ void drawScenePanel(ViewerState& state) {
       ImGui::EndCombo();
     }
   }
-  if (ImGui::Button("Reset camera (R)")) {
-    state.camera.reset();
-    syncCameraToParams(state);
-  }
+  if (ImGui::Button("Reset camera (R)")) resetCameraAction(state);
   ImGui::SameLine();
-  if (ImGui::Button("Frame scene (F)")) {
-    glm::vec3 lo, hi;
-    sceneBounds(state.scene, lo, hi);
-    state.camera.frame(lo, hi);
-    syncCameraToParams(state);
-  }
+  if (ImGui::Button("Frame scene (F)")) frameSceneAction(state);
 }
 
 void drawLightPanel(ViewerState& state) {

@@ -33,13 +33,8 @@ void drawStackSelector(ViewerState& state, const StageInfo& stage) {
   for (const auto& e : state.registry->entries()) {
     if (e.info.stage != stage.id) continue;
     bool on = state.selection.isActive(e.info.id);
-    if (ImGui::Checkbox(e.info.id.c_str(), &on)) {
-      if (on)
-        state.selection.activate(e.info.id);
-      else
-        state.selection.deactivate(e.info.id);
-      state.techniquesChanged = true;
-    }
+    if (ImGui::Checkbox(e.info.id.c_str(), &on))
+      runGuarded(state, [&] { setTechniqueActiveAction(state, e.info.id, on); });
   }
 }
 

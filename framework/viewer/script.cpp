@@ -3,6 +3,7 @@
 // field of the wrong type is exit 3 and a value out of range exit 2, before anything runs.
 #include "viewer/script.h"
 
+#include "image/image.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "viewer/json_fields.h"
@@ -40,12 +41,6 @@ std::string requireFile(const json& args, const std::string& where) {
   std::string file = requireString(args, "file", where);
   if (file.empty()) usageError(where + ": \"file\" must not be empty");
   return file;
-}
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
 }
 
 void checkTechnique(const json& a, const std::string& w) {
@@ -92,7 +87,7 @@ void checkWaitSamples(const json& a, const std::string& w) {
 }
 void checkScreenshot(const json& a, const std::string& w) {
   const std::string file = requireFile(a, w);
-  if (lowerExtension(file) != ".png") usageError(w + ": \"file\" must be a .png file, got '" + file + "'");
+  requirePngPath(file, w + ": \"file\"");
 }
 void checkFile(const json& a, const std::string& w) {
   requireFile(a, w);

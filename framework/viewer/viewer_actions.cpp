@@ -23,6 +23,24 @@ void applyScene(ViewerState& state) {
   syncCameraFromParams(state);
 }
 
+void applyBookmark(ViewerState& state, const Bookmark& b) {
+  if (b.scene && *b.scene != state.sceneSpec) loadSceneAction(state, *b.scene);
+  if (b.techniques) {
+    TechniqueSelection selection(*state.registry);
+    for (const auto& id : *b.techniques)
+      selection.activate(id);
+    state.selection = selection;
+    state.techniquesChanged = true;
+  }
+  for (const auto& [key, value] : b.params.items())
+    state.params.setJson(key, value); // on the caller's copy of the state (bookmarkAction)
+  applyScene(state);
+  if (b.cameraPosition || b.cameraTarget || b.cameraFov)
+    cameraAction(state, b.cameraPosition, b.cameraTarget, b.cameraFov);
+  if (!b.view.empty()) viewAction(state, b.view);
+  if (!b.compare.empty()) compareAction(state, b.compare);
+}
+
 } // namespace
 
 const char* debugModeName(DebugMode mode) {
@@ -92,6 +110,15 @@ void selectTechniqueAction(ViewerState& state, const std::string& stage, const s
   state.techniquesChanged = true;
 }
 
+void setTechniqueActiveAction(ViewerState& state, const std::string& id, bool on) {
+  state.registry->get(id); // Error(Usage) naming an unknown id, also when switching off
+  if (on)
+    state.selection.activate(id);
+  else
+    state.selection.deactivate(id);
+  state.techniquesChanged = true;
+}
+
 void setParamAction(ViewerState& state, const std::string& key, const nlohmann::json& value) {
   ParamSet copy = state.params; // a camera key is checked with the scene before it is kept
   copy.setJson(key, value);
@@ -118,6 +145,18 @@ void cameraAction(ViewerState& state, const std::optional<glm::vec3>& position, 
   applySceneParams(copy, state.scene); // Error(Usage) when the target equals the position
   state.params = std::move(copy);
   syncCameraFromParams(state);
+}
+
+void resetCameraAction(ViewerState& state) {
+  state.camera.reset();
+  syncCameraToParams(state);
+}
+
+void frameSceneAction(ViewerState& state) {
+  glm::vec3 lo, hi;
+  sceneBounds(state.scene, lo, hi);
+  state.camera.frame(lo, hi);
+  syncCameraToParams(state);
 }
 
 void viewAction(ViewerState& state, const nlohmann::json& fields) {
@@ -176,26 +215,13 @@ void bookmarkAction(ViewerState& state, int index) {
     usageError("bookmark " + std::to_string(index) + " does not exist (" + std::to_string(state.bookmarks.size()) +
                " bookmarks)");
   const Bookmark& b = state.bookmarks[std::size_t(index)];
-  if (b.scene && *b.scene != state.sceneSpec) loadSceneAction(state, *b.scene);
-  if (b.techniques) {
-    TechniqueSelection selection(*state.registry);
-    for (const auto& id : *b.techniques)
-      selection.activate(id);
-    state.selection = selection;
-    state.techniquesChanged = true;
-  }
-  ParamSet copy = state.params;
-  for (const auto& [key, value] : b.params.items())
-    copy.setJson(key, value);
-  applySceneParams(copy, state.scene);
-  state.params = std::move(copy);
-  syncCameraFromParams(state);
-  if (b.cameraPosition || b.cameraTarget || b.cameraFov)
-    cameraAction(state, b.cameraPosition, b.cameraTarget, b.cameraFov);
-  if (!b.view.empty()) viewAction(state, b.view);
-  if (!b.compare.empty()) compareAction(state, b.compare);
-  state.bookmark = index;
-  state.status = "bookmark " + std::to_string(index + 1) + "/" + std::to_string(state.bookmarks.size()) + ": " + b.name;
+  // Applied to a copy and kept only when every part succeeded, as the other actions: a bookmark
+  // of another scene is validated at start without that scene, so a part may still fail here.
+  ViewerState next = state;
+  applyBookmark(next, b);
+  next.bookmark = index;
+  next.status = "bookmark " + std::to_string(index + 1) + "/" + std::to_string(next.bookmarks.size()) + ": " + b.name;
+  state = std::move(next);
 }
 
 void syncCameraToParams(ViewerState& state) {

@@ -19,12 +19,19 @@ class TechniqueRegistry;
 void loadSceneAction(ViewerState& state, const std::string& spec);
 // Activates `id` in `stage` ("off": deactivates the stage's technique).
 void selectTechniqueAction(ViewerState& state, const std::string& stage, const std::string& id);
+// Switches one technique on or off by itself (a stack stage's checkbox; on in an exclusive stage
+// replaces the stage's technique). Error(Usage) for an unknown id.
+void setTechniqueActiveAction(ViewerState& state, const std::string& id, bool on);
 void setParamAction(ViewerState& state, const std::string& key, const nlohmann::json& value);
 void setParamValueAction(ViewerState& state, const std::string& key, const ParamValue& value);
 void resetParamAction(ViewerState& state, const std::string& key);
 // Moves the camera; each part optional. Values are checked against the camera.* keys.
 void cameraAction(ViewerState& state, const std::optional<glm::vec3>& position, const std::optional<glm::vec3>& target,
                   const std::optional<float>& fov);
+// The camera back to its home (the scene's camera, or --set camera.* at start) / framed on the
+// scene's bounds (keys F and R, and their panel buttons); the camera.* keys follow.
+void resetCameraAction(ViewerState& state);
+void frameSceneAction(ViewerState& state);
 // Applies a "view" object / a "compare" object (viewer/view_fields.h), fields optional.
 void viewAction(ViewerState& state, const nlohmann::json& fields);
 void compareAction(ViewerState& state, const nlohmann::json& fields);

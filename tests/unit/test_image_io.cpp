@@ -77,6 +77,19 @@ float srgbReference(float v) { return v <= 0.0031308f ? 12.92f * v : 1.055f * st
 
 // ---- PFM ----
 
+TEST(ImageRange, OverValidFinitePixelsAndEveryChannel) {
+  // The depth preview's and the viewer's auto range: background (mask 0) and non-finite values
+  // do not count; every channel does.
+  Image im(3, 1, 2);
+  im.pixels = {0.5f, -2.0f, 100.0f, 100.0f, std::numeric_limits<float>::infinity(), 3.0f};
+  im.mask = {1.0f, 0.0f, 1.0f};
+  const ValueRange r = validRange(im);
+  EXPECT_EQ(r.min, -2.0f);
+  EXPECT_EQ(r.max, 3.0f);
+  im.mask = {0.0f, 0.0f, 0.0f};
+  EXPECT_TRUE(validRange(im).empty());
+}
+
 TEST(PfmIo, RoundTripsThreeChannelsExactly) {
   const fs::path path = freshDir() / "rgb.pfm";
   const Image image = sampleRgb();

@@ -170,6 +170,26 @@ TEST(ProgressiveReference, RestartIsPromptAndBumpsTheGeneration) {
   EXPECT_EQ(ref.samples(), samples); // nothing runs after stop()
 }
 
+TEST(ProgressiveReference, CancelReturnsAtOnceAndTheWorkerStopsOnItsOwn) {
+  // cancel() is what the viewer calls while the camera moves: it must not wait for the worker
+  // (the bound is loose for a loaded machine), and no sample is added once the worker has seen it.
+  const test::WallCase c = test::wallCase(256, 256, 0.95f);
+  ProgressiveReference ref;
+  ref.start(c.scene, c.points, "ao", progressive(65536, c.radius));
+  const auto waitStart = Clock::now();
+  while (ref.samples() < 4 && secondsSince(waitStart) < 60.0)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_GE(ref.samples(), 4);
+  const auto cancel = Clock::now();
+  ref.cancel();
+  EXPECT_LT(secondsSince(cancel), 0.5) << "cancel() must not wait for the worker";
+  EXPECT_FALSE(ref.running());
+  ref.stop(); // now waits for the worker to have left the batch
+  const int samples = ref.samples();
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_EQ(ref.samples(), samples);
+}
+
 TEST(ProgressiveReference, RejectsBadInputAtOnceAndCancelsThePreviousJob) {
   Scene s;
   test::addQuad(s, {0, 0, 0}, {20, 0, 0}, {0, 0, -20});

@@ -28,6 +28,8 @@ const TechniqueRegistry& registry() {
                         {{"hard.depth", 1, ""}}));
     t.add(fakeTechnique("soft", "shadow", {ParamSpec::real("soft.width", "Width", 1.0, 0.0, 8.0)}));
     t.add(fakeTechnique("occ", "ao", {ParamSpec::real("occ.strength", "Strength", 0.5, 0.0, 2.0)}));
+    t.add(fakeTechnique("grain", "post", {}));
+    t.add(fakeTechnique("vignette", "post", {}));
     return t;
   }();
   return r;
@@ -165,4 +167,51 @@ TEST(ViewerActions, BookmarksApplyTechniquesParametersViewAndCompare) {
   EXPECT_EQ(s.bookmark, 0);
   EXPECT_NE(s.status.find("soft, wide"), std::string::npos);
   checkCaught(catchError([&] { bookmarkAction(s, 1); }), ExitCode::Usage, {"bookmark 1"});
+}
+
+TEST(ViewerActions, StackTechniquesSwitchOnAndOffOneByOne) {
+  ViewerState s = contactState();
+  s.techniquesChanged = false;
+  setTechniqueActiveAction(s, "grain", true);
+  setTechniqueActiveAction(s, "vignette", true);
+  EXPECT_TRUE(s.techniquesChanged);
+  EXPECT_EQ(s.selection.ordered(), (std::vector<std::string>{"grain", "vignette"})); // a stack keeps both
+  setTechniqueActiveAction(s, "grain", false);
+  EXPECT_EQ(s.selection.ordered(), (std::vector<std::string>{"vignette"}));
+  checkCaught(catchError([&] { setTechniqueActiveAction(s, "nope", false); }), ExitCode::Usage, {"nope"});
+  EXPECT_EQ(s.selection.ordered(), (std::vector<std::string>{"vignette"}));
+}
+
+TEST(ViewerActions, FrameAndResetCameraMoveTheCameraKeysToo) {
+  ViewerState s = contactState();
+  const glm::vec3 home = s.params.getVec3("camera.position");
+  cameraAction(s, glm::vec3(30, 20, 30), glm::vec3(29, 19, 29), std::nullopt); // looking away
+  frameSceneAction(s);
+  const Bounds world = s.scene.worldBounds();
+  EXPECT_EQ(s.params.getVec3("camera.target"), world.center());
+  EXPECT_EQ(s.params.getVec3("camera.position"), s.camera.camera().position);
+  resetCameraAction(s);
+  EXPECT_EQ(s.params.getVec3("camera.position"), home);
+  EXPECT_EQ(s.camera.camera().position, home);
+}
+
+TEST(ViewerActions, ABookmarkThatFailsPartWayChangesNothing) {
+  // A bookmark of another scene is validated at start without that scene; here its scene loads,
+  // its techniques apply, and then a value is out of range: nothing of it may stay.
+  ViewerState s = contactState();
+  selectTechniqueAction(s, "shadow", "hard");
+  Bookmark b;
+  b.name = "cornell, too wide";
+  b.scene = "cornell";
+  b.techniques = std::vector<std::string>{"soft"};
+  b.params = {{"soft.width", 99.0}};
+  s.bookmarks = {b};
+  const auto before = s.params.toJson();
+  const unsigned long generation = s.sceneGeneration;
+  checkCaught(catchError([&] { bookmarkAction(s, 0); }), ExitCode::Usage, {"soft.width"});
+  EXPECT_EQ(s.sceneSpec, "contact");
+  EXPECT_EQ(s.sceneGeneration, generation);
+  EXPECT_EQ(s.params.toJson(), before);
+  EXPECT_EQ(s.selection.ordered(), (std::vector<std::string>{"hard"}));
+  EXPECT_EQ(s.bookmark, -1);
 }

@@ -11,7 +11,9 @@
 #include "reference/progressive_reference.h"
 #include "viewer/viewer_state.h"
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace rtlab {
 
@@ -22,21 +24,45 @@ std::string referenceAovFor(const ViewerState& state);
 class ReferenceView {
 public:
   // After a frame rendered with FrameOutputs{aovs: {aov}, surfaces: true}: restarts the
-  // reference if its inputs changed, takes the latest batch, and updates state.reference.
+  // reference if its inputs changed and then held still for a frame (while the camera or a light
+  // is being dragged it is only cancelled), takes the latest batch, updates state.reference, and
+  // measures the frame against it when the frame's parameters held still for a frame.
   void update(ViewerState& state, Renderer& renderer, unsigned seed, int width, int height);
-  // Stops refining (compare mode off).
+  // Stops refining (compare mode off); does not wait for the worker.
   void stop(ViewerState& state);
   // The reference's current mean (RGBA32F; alpha = mask), or nullptr before the first batch.
   const gl::Texture* texture() const { return m_texture ? &m_texture : nullptr; }
   int channels() const { return m_snapshot.image.channels; }
 
 private:
+  // The cheap inputs the reference's key is built from: the key is built again only when they move.
+  struct KeyInputs {
+    unsigned long sceneGeneration = ~0ul, paramsRevision = ~0ul;
+    int width = 0, height = 0;
+    std::string aov;
+    bool operator==(const KeyInputs&) const = default;
+  };
+  // What the metrics were last computed from.
+  struct MetricsInputs {
+    std::uint64_t generation = 0;
+    int bucket = -1;
+    unsigned long paramsRevision = ~0ul;
+    std::vector<std::string> techniques;
+    bool operator==(const MetricsInputs&) const = default;
+  };
+  void restart(ViewerState& state, Renderer& renderer, unsigned seed, const std::string& aov);
+  void measure(ViewerState& state, Renderer& renderer, int width, int height, const std::string& aov);
+
   ProgressiveReference m_reference;
   ProgressiveSnapshot m_snapshot;
   gl::Texture m_texture;
-  std::string m_inputsKey;                // what the running reference was started from
+  KeyInputs m_keyInputs;
+  std::string m_key;                      // everything the reference depends on, for m_keyInputs
+  std::string m_startedKey;               // what the running reference was started from
+  std::string m_settlingKey;              // new inputs seen last frame, not started yet
   unsigned long m_sceneGeneration = ~0ul; // the scene the reference's BVH was built for
-  std::string m_metricsKey;               // what the metrics were computed from
+  MetricsInputs m_metrics;
+  unsigned long m_lastRevision = ~0ul; // the parameters' revision in the previous frame
   bool m_active = false;
 };
 

@@ -1,6 +1,7 @@
 #include "viewer/window/screenshot.h"
 
 #include "gl/gl.h"
+#include "util/error.h"
 
 #include <vector>
 
@@ -23,6 +24,9 @@ Image readWindow(int width, int height) {
 }
 
 void writeScreenshot(const std::string& path, int width, int height) {
+  // The command line and scripts check this before the window opens; the panel's path field and
+  // F12 get here unchecked (writeImage would write display values into an .exr or .pfm).
+  requirePngPath(path, "screenshot");
   // The values are already display-encoded: stored unchanged.
   writeImage(path, readWindow(width, height), PngEncoding::Linear01);
 }

@@ -9,7 +9,8 @@ namespace rtlab {
 
 // The default framebuffer's back buffer, rows top to bottom, 3 channels of display values.
 Image readWindow(int width, int height);
-// Writes readWindow() as PNG; Error(Output) naming the path on failure.
+// Writes readWindow() as PNG; Error(Usage) unless the path ends in .png, Error(Output) naming the
+// path on failure.
 void writeScreenshot(const std::string& path, int width, int height);
 
 } // namespace rtlab

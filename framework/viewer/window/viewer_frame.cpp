@@ -18,9 +18,16 @@ FrameOutputs ViewerFrame::outputsFor(ViewerState& state, bool reference, const s
   FrameOutputs outputs;
   outputs.displayColor = true;
   if (state.view.mode != DebugMode::Off) {
+    // Rendered only where draw(), a snapshot or the auto range uses it: the reference and
+    // difference views replace the full-screen debug view, and hide the picture-in-picture.
+    const bool referenceShown =
+        state.compare.mode == CompareMode::Reference || state.compare.mode == CompareMode::Difference;
+    const bool used = state.view.autoRangeRequested ||
+                      (state.view.mode == DebugMode::Full && (!referenceShown || state.snapshotRequested)) ||
+                      (state.view.mode == DebugMode::Pip && state.compare.mode == CompareMode::Off);
     try {
       m_renderer.checkAov(state.view.aov);
-      outputs.aovs.push_back(state.view.aov);
+      if (used) outputs.aovs.push_back(state.view.aov);
     } catch (const Error& e) {
       state.status = std::string(e.what()) + ": debug view off";
       state.view.mode = DebugMode::Off;
@@ -96,23 +103,13 @@ DisplaySide ViewerFrame::aovSide(const std::string& aov) {
 void ViewerFrame::autoRange(ViewerState& state) {
   state.view.autoRangeRequested = false;
   if (state.view.mode == DebugMode::Off) return;
-  const Image image = m_renderer.readAov(state.view.aov);
-  float lo = INFINITY, hi = -INFINITY;
-  for (std::size_t i = 0; i < image.pixelCount(); ++i) {
-    if (image.hasMask() && image.mask[i] < 0.5f) continue; // background holds 0, not data
-    for (int c = 0; c < image.channels; ++c) {
-      const float v = image.pixels[i * std::size_t(image.channels) + std::size_t(c)];
-      if (!std::isfinite(v)) continue;
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
-  }
-  if (!(lo < hi)) {
+  const ValueRange range = validRange(m_renderer.readAov(state.view.aov)); // background holds 0, not data
+  if (!(range.min < range.max)) {
     state.status = "auto range: the view holds a single value";
     return;
   }
-  state.view.min = lo;
-  state.view.max = hi;
+  state.view.min = range.min;
+  state.view.max = range.max;
 }
 
 void ViewerFrame::takeSnapshot(ViewerState& state, const DisplaySide& side) {

@@ -40,16 +40,8 @@ InputResult handleViewerInput(GLFWwindow* window, ViewerState& state, float dt, 
     if (keyPressed(GLFW_KEY_L)) state.lecture = !state.lecture;
     if (keyPressed(GLFW_KEY_RIGHT)) stepBookmark(state, +1);
     if (keyPressed(GLFW_KEY_LEFT)) stepBookmark(state, -1);
-    if (keyPressed(GLFW_KEY_R)) {
-      state.camera.reset();
-      syncCameraToParams(state);
-    }
-    if (keyPressed(GLFW_KEY_F)) {
-      glm::vec3 lo, hi;
-      sceneBounds(state.scene, lo, hi);
-      state.camera.frame(lo, hi);
-      syncCameraToParams(state);
-    }
+    if (keyPressed(GLFW_KEY_R)) resetCameraAction(state);
+    if (keyPressed(GLFW_KEY_F)) frameSceneAction(state);
   }
   int w = 1, h = 1;
   glfwGetWindowSize(window, &w, &h);
