@@ -34,7 +34,10 @@ const gl::Framebuffer& ResourcePool::framebuffer(const std::string& label, const
                                                 const gl::Texture* depth, int layer) {
   std::string key = label + "|";
   for (const auto* c : colors) key += std::to_string(c->id()) + ",";
-  key += "|" + std::to_string(depth ? depth->id() : 0) + "|" + std::to_string(layer);
+  key += "|";
+  key += std::to_string(depth ? depth->id() : 0);
+  key += "|";
+  key += std::to_string(layer);
   auto it = m_framebuffers.find(key);
   if (it == m_framebuffers.end()) it = m_framebuffers.emplace(key, makeFramebuffer(label, colors, depth, layer)).first;
   return it->second;

@@ -65,7 +65,11 @@ void ProgressBar::draw(std::uint64_t done) {
   const bool knowEta = fraction > 0.0 && elapsed > 0.2;
   const double left = knowEta ? elapsed * (1.0 - fraction) / fraction : 0.0;
   // Pad with spaces so a shorter line fully covers the previous one.
-  writeStderr("\r" + format(m_label, fraction, left, knowEta) + "   ");
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string&&.
+  std::string line = "\r";
+  line += format(m_label, fraction, left, knowEta);
+  line += "   ";
+  writeStderr(line);
   m_drawn = true;
   m_drawnDone = done;
 }
