@@ -34,6 +34,7 @@ const gl::Framebuffer& ResourcePool::framebuffer(const std::string& label, const
                                                 const gl::Texture* depth, int layer) {
   std::string key = label + "|";
   for (const auto* c : colors) key += std::to_string(c->id()) + ",";
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string&&.
   key += "|";
   key += std::to_string(depth ? depth->id() : 0);
   key += "|";
