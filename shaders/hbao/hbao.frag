@@ -8,6 +8,12 @@
 #include "../ao/common/ao_common.glsl"
 #include "horizon.glsl"
 
+// 1 when hbao.attenuation > 0: each raise of the horizon is weighted by its distance, so the
+// measure (an acos) is taken per raising tap; 0: unweighted, taken once per direction.
+#ifndef HBAO_WEIGHTED
+#define HBAO_WEIGHTED 1
+#endif
+
 uniform int uDirections;
 uniform int uSteps;
 uniform float uMaxRadiusPx;  // frame pixels
@@ -27,9 +33,21 @@ vec3 surfaceThrough(vec2 q, ivec2 tap, vec4 texel) {
   vec3 stored = aoTexelPosition(tap, texel.w);
   vec3 ray = aoViewPosition(q, 1.0);
   float denom = dot(ray, texel.xyz);
-  if (abs(denom) < 1e-2 * length(ray)) return stored;
+  if (denom * denom < 1e-4 * dot(ray, ray)) return stored; // |cos| < 0.01, without a sqrt per tap
   float t = dot(stored, texel.xyz) / denom; // ray depth of the intersection
   return t > 0.0 ? ray * t : stored;
+}
+
+// How many of the taps at firstPx + (i + offset) * stepPx along unit direction dir from centre lie
+// in the frame (x in [0, width), y in [0, height)): the march leaves the frame once, so clipping the
+// segment once per direction replaces a bounds test per tap.
+int tapsInFrame(vec2 centre, vec2 dir, float firstPx, float stepPx, float offset) {
+  vec2 limit = mix(-centre, vec2(uFullSize) - centre, greaterThan(dir, vec2(0.0)));
+  vec2 exitT = mix(vec2(1e30), limit / dir, greaterThan(abs(dir), vec2(1e-6)));
+  float reach = min(exitT.x, exitT.y) - firstPx;  // march length inside the frame past the first tap
+  if (reach <= 0.0) return 0;
+  if (stepPx <= 0.0) return uSteps;
+  return int(min(float(uSteps), ceil(reach / stepPx - offset)));
 }
 
 float aoEvaluate(ivec2 px, AoSurface s) {
@@ -42,6 +60,7 @@ float aoEvaluate(ivec2 px, AoSurface s) {
   float rotation = uJitter ? aoNoise(px, 0) : 0.5;
   float offset = uJitter ? aoNoise(px, 1) : 0.5;
   vec2 centre = aoFullPixel(px);
+  float invScale = 1.0 / float(uScale);  // frame pixels to AO texels, without an integer division per tap
   vec3 v = normalize(-s.p);
   float r2 = uRadius * uRadius;
   float occlusion = 0.0, open = 0.0;
@@ -68,26 +87,34 @@ float aoEvaluate(ivec2 px, AoSurface s) {
 #else
     float horizonMeasure = sliceMeasure(sl, horizon);
 #endif
-    for (int i = 0; i < uSteps; ++i) {
+    int taps = tapsInFrame(centre, dir, firstPx, stepPx, offset);
+    for (int i = 0; i < taps; ++i) {
       vec2 q = centre + dir * (firstPx + (float(i) + offset) * stepPx);
-      if (any(lessThan(q, vec2(0.0))) || any(greaterThanEqual(q, vec2(uFullSize)))) break; // off-screen
-      ivec2 tap = min(ivec2(q) / uScale, uAoSize - 1);
+      ivec2 tap = clamp(ivec2(q * invScale), ivec2(0), uAoSize - 1);  // q >= 0: truncation is floor
       vec4 texel = texelFetch(uAoView, tap, 0);
-      float raised = 0.0;
+      bool raises = false;
       if (texel.w > 0.0 && tap != px) {  // sky (depth 0) never occludes
         vec3 offsetView = surfaceThrough(q, tap, texel) - s.p;
         float d2 = dot(offsetView, offsetView);
         float c = min(tapCos(sl, offsetView), sl.lo.c);  // the tap's angle, at least lo
-        if (d2 <= r2 && d2 > 0.0 && c > horizonCos) {
+        raises = d2 <= r2 && d2 > 0.0 && c > horizonCos;
+#if HBAO_WEIGHTED
+        if (raises) {
           float measure = sliceMeasure(sl, angleOf(c));
           occlusion += (1.0 - uAttenuation * d2 / r2) * (horizonMeasure - measure);
-          horizonCos = c;
           horizonMeasure = measure;
-          raised = 1.0;
         }
+#endif
+        horizonCos = raises ? c : horizonCos;
       }
-      AO_VISIT(q / vec2(uFullSize), raised);
+      AO_VISIT(q / vec2(uFullSize), raises ? 1.0 : 0.0);
     }
+#if !HBAO_WEIGHTED
+    // With W = 1 each raise adds measure(old) - measure(new), so the sum telescopes to the measure
+    // between the starting horizon and the highest tap: one angle (an acos) per direction, none
+    // per tap.
+    if (horizonCos > horizon.c) occlusion += horizonMeasure - sliceMeasure(sl, angleOf(horizonCos));
+#endif
   }
   // Cosine: 1 - occluded / open measure, exactly 1 where nothing rises above the tangent plane
   // whatever the directions. Solid angle: Bavoil's 1 - mean of (sin h - sin t) W.

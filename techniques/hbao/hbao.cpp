@@ -64,7 +64,8 @@ private:
   AoEstimatorPass estimator(const ParamSet& params) const override {
     AoEstimatorPass pass;
     pass.fragment = "hbao/hbao.frag";
-    pass.defines = {params.getEnumName("hbao.integral") == "cosine" ? "HBAO_INTEGRAL 1" : "HBAO_INTEGRAL 0"};
+    pass.defines = {params.getEnumName("hbao.integral") == "cosine" ? "HBAO_INTEGRAL 1" : "HBAO_INTEGRAL 0",
+                    params.getFloat("hbao.attenuation") > 0.0f ? "HBAO_WEIGHTED 1" : "HBAO_WEIGHTED 0"};
     pass.bind = [](PassContext& ctx, gl::Program& p) {
       const float bias = glm::radians(ctx.params.getFloat("hbao.angle_bias"));
       p.set("uDirections", ctx.params.getInt("hbao.directions"))

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -81,6 +82,36 @@ TEST(Hbao, SolidAngleIntegralIsBiasedAgainstTheCosineReference) {
   const auto classic =
       measureAo("cornell", "hbao", {"hbao.blur=false", "hbao.integral=solid_angle", "hbao.attenuation=1"}, 96, 256);
   EXPECT_LT(cosine.metrics.rmse, 0.8 * classic.metrics.rmse);
+}
+
+TEST(Hbao, UnweightedSumOfRaisesEqualsTheWeightedMarch) {
+  // With hbao.attenuation = 0 every raise of the horizon adds measure(old) - measure(new), a sum
+  // that telescopes, so the shader takes the final horizon's angle once per direction
+  // (HBAO_WEIGHTED 0); any attenuation > 0 weighs each raise and takes one angle per raising tap
+  // (HBAO_WEIGHTED 1). At an attenuation of 1e-6 the weights differ from 1 by at most 1e-6, so
+  // both programs must give the same ao, for either integral (up to the R16F storage of ao.raw:
+  // half a unit in the last place near 1 is 2.4e-4). A wrong starting horizon or a lost raise
+  // changes whole directions (several 0.01).
+  for (const std::string integral : {"cosine", "solid_angle"}) {
+    const std::vector<std::string> sets = {"hbao.blur=false", "hbao.integral=" + integral};
+    const auto once = measureAo("cornell", "hbao", sets, 96, 0);
+    const auto perRaise = measureAo("cornell", "hbao", joined(sets, {"hbao.attenuation=0.000001"}), 96, 0);
+    ASSERT_EQ(once.glErrors + perRaise.glErrors, 0);
+    double maxDiff = 0.0, sumDiff = 0.0;
+    int n = 0;
+    for (int y = 0; y < once.ao.height; ++y)
+      for (int x = 0; x < once.ao.width; ++x) {
+        if (once.ao.mask[std::size_t(y) * once.ao.width + x] < 0.5f) continue;
+        const double d = std::abs(double(once.ao.at(x, y, 0)) - perRaise.ao.at(x, y, 0));
+        maxDiff = std::max(maxDiff, d);
+        sumDiff += d;
+        ++n;
+      }
+    ASSERT_GT(n, 1000) << integral;
+    std::printf("%s: max |ao difference| %.2e, mean %.2e\n", integral.c_str(), maxDiff, sumDiff / n);
+    EXPECT_LT(maxDiff, 1e-3) << integral;
+    EXPECT_LT(sumDiff / n, 1e-4) << integral;
+  }
 }
 
 TEST(Hbao, ExtremesAreFiniteAndExcludeSky) {
