@@ -20,14 +20,14 @@ public:
     info.title = "Moment shadow mapping (Peters & Klein 2015)";
     info.summary = "Hamburger 4-moment bound over a box from a summed-area table, sized by a blocker estimate";
     info.params = {
-        ParamSpec::choice("msm.format", "Moment format", {"rgba32f", "rgba16_optimized", "rgba16f_optimized"}, 0)
+        ParamSpec::choice("msm.format", "Moment format", {"rgba32f", "rgba16_optimized", "rgba16f_optimized"}, 1)
             .withFlags(kParamRealloc | kParamRecompile)
             .withHelp("Storage of the moments, always in the paper's optimized basis: 32-bit float, 16-bit normalized "
                       "integers (the paper's 64-bit MSM), or 16-bit half floats (too coarse: speckles)"),
         ParamSpec::real("msm.moment_bias", "Moment bias", 3e-5, 1e-7, 1e-1).logScale()
             .withHelp("Moments are pulled towards those of a uniform depth distribution by this much (alpha), keeping the Hankel matrix invertible"),
         ParamSpec::boolean("msm.sat_offset", "Offset before summing", true)
-            .withHelp("Subtract 0.5 from the moments before building the summed-area table"),
+            .withHelp("Subtract 0.5 from the moments before building the fixed-point summed-area table (halves its sums: one more bit)"),
     };
     for (auto& spec : softShadowParams("msm", 64.0, 256.0, 256.0)) info.params.push_back(spec);
     info.debugViews = softShadowDebugViews("msm");

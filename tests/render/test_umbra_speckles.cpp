@@ -2,8 +2,8 @@
 // `contact` at 640x360 (defaults), the share of the reference's deep umbra (reference visibility
 // exactly 0, eroded by 3 px: image/umbra_speckles.h) where a technique's visibility exceeds 0.05
 // is at most 0.05% for vssm and msm, and for pcss, the control that filters the depth map itself.
-// With the float summed-area table the shares were 0.2-0.9% (techniques/vssm/README.md and
-// techniques/msm/README.md, "Speckles": the table's rounding, not the bounds).
+// With the float summed-area table the shares were 0.5-14% (techniques/vssm/README.md and
+// techniques/msm/README.md, "Speckles": the table's rounding and MSM's half-float storage).
 #include "render_fixture.h"
 
 #include "app/frame_options.h"
@@ -33,6 +33,7 @@ TEST_P(UmbraSpeckleShare, MomentShadowsLeaveNoLitPixelsInTheUmbra) {
     TestFrame f = makeTestFrame(scene, technique, {}, kWidth, kHeight);
     TestRender r = renderTestFrame(f, {"visibility"});
     EXPECT_EQ(r.glErrors, 0) << technique;
+    const Image visibility = r.renderer->readAov("visibility"); // before the reference re-renders
     if (reference.pixels.empty()) {
       // The reference does not depend on the active technique: one per scene.
       ResolvedFrame resolved;
@@ -43,11 +44,12 @@ TEST_P(UmbraSpeckleShare, MomentShadowsLeaveNoLitPixelsInTheUmbra) {
       resolved.techniques = f.techniques;
       reference = renderReferenceFrame(*r.renderer, resolved, "visibility", kSpp, false);
     }
-    const UmbraSpeckles s = measureUmbraSpeckles(reference, r.renderer->readAov("visibility"));
+    const UmbraSpeckles s = measureUmbraSpeckles(reference, visibility);
     std::printf("%-8s %-5s umbra %zu px, speckles %zu, share %.3f%%\n", scene.c_str(), technique, s.umbraPixels,
                 s.speckles, 100.0 * s.share());
-    // Both scenes hold large umbrae (about 7000 px on contact, 12000 on stacked at this size).
-    EXPECT_GT(s.umbraPixels, std::size_t(3000)) << technique;
+    // Measured: about 5200 deep-umbra pixels on stacked, 3000 on contact; the bound keeps the
+    // test from passing on an empty umbra (0.05% is then 2.6 and 1.5 pixels).
+    EXPECT_GT(s.umbraPixels, std::size_t(2000)) << technique;
     EXPECT_LE(s.share(), kMaxShare) << technique << " on " << scene;
   }
 }
