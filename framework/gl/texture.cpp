@@ -19,9 +19,9 @@ std::size_t bytesPerTexel(GLenum format) {
   case GL_RG8: case GL_R16F: case GL_DEPTH_COMPONENT16: return 2;
   case GL_RGBA8: case GL_SRGB8_ALPHA8: case GL_RG16F: case GL_R32F: case GL_DEPTH_COMPONENT24:
   case GL_DEPTH_COMPONENT32F: case GL_DEPTH24_STENCIL8: case GL_R11F_G11F_B10F: case GL_RGB10_A2: return 4;
-  case GL_RGBA16F: case GL_RG32F: case GL_RGBA16: return 8;
+  case GL_RGBA16F: case GL_RG32F: case GL_RG32UI: case GL_RGBA16: return 8;
   case GL_RGB32F: return 12;
-  case GL_RGBA32F: return 16;
+  case GL_RGBA32F: case GL_RGBA32UI: return 16;
   default: return 4;
   }
 }

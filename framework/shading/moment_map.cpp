@@ -10,10 +10,31 @@
 #include "util/error.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rtlab {
 
 std::string momentSatResource(const std::string& technique) { return technique + ".sat"; }
+
+float momentSatScale(const ParamSet& params, const MomentMapConfig& config) {
+  // The widest box a lookup makes: boxMoments (shaders/common/moments.glsl) takes at least half a
+  // texel; the visibility shaders clamp the search to [1, max_search] and the filter to
+  // [min_penumbra, max_penumbra]. A half-width r spans at most floor(2r) + 2 texels, and never
+  // more than the map.
+  const std::string& id = config.technique;
+  const double radius = std::max({0.5, double(params.getFloat(id + ".max_search")),
+                                  double(params.getFloat(id + ".min_penumbra")),
+                                  double(params.getFloat(id + ".max_penumbra"))});
+  const double size = params.getInt("shadow.resolution");
+  const double width = std::min(size, std::floor(2.0 * radius) + 2.0);
+  // Every moment lies in [0,1] (z^k of z in [0,1], and the optimized transform maps [0,1] into
+  // [0,1]), so |moment - offset| <= 0.5 with the offset and 1 without; 1% margin for 16-bit
+  // storage's rounding. A box's sum, with up to half a unit of rounding per texel, must fit in
+  // a signed 32-bit integer.
+  const double magnitude = (config.satOffset ? 0.5 : 1.0) * 1.01;
+  const double units = (std::ldexp(1.0, 31) / (width * width) - 0.5) / magnitude;
+  return float(std::ldexp(1.0, int(std::floor(std::log2(units)))));
+}
 
 void addMomentMapPasses(FrameGraph& frame, const MomentMapConfig& config) {
   const LightSpace ls = shadowLightSpace(frame.scene(), frame.params());
@@ -30,7 +51,8 @@ void addMomentMapPasses(FrameGraph& frame, const MomentMapConfig& config) {
   gl::TextureDesc depthDesc = momentDesc;
   depthDesc.format = GL_DEPTH_COMPONENT24;
   gl::TextureDesc satDesc = momentDesc;
-  satDesc.format = GL_RGBA32F;
+  satDesc.format = config.moments == 2 ? GL_RG32UI : GL_RGBA32UI;
+  const std::string satImageFormat = config.moments == 2 ? "rg32ui" : "rgba32ui";
   std::vector<std::string> defines = {"MOMENTS " + std::to_string(config.moments)};
   if (config.optimized) defines.push_back("OPTIMIZED");
 
@@ -76,16 +98,18 @@ void addMomentMapPasses(FrameGraph& frame, const MomentMapConfig& config) {
       },
       [=](PassContext& ctx) {
         const glm::vec4 offset(config.satOffset ? 0.5f : 0.0f);
-        glBindImageTexture(0, ctx.texture(sat).id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+        const float scale = momentSatScale(ctx.params, config);
+        glBindImageTexture(0, ctx.texture(sat).id(), 0, GL_FALSE, 0, GL_READ_WRITE, satDesc.format);
         for (int axis = 0; axis < 2; ++axis) {
-          gl::Program& p = ctx.programs.get({{"shading/sat.comp"}, {"AXIS " + std::to_string(axis)}, "sat"});
+          gl::Program& p = ctx.programs.get(
+              {{"shading/sat.comp"}, {"AXIS " + std::to_string(axis), "FORMAT " + satImageFormat}, "sat"});
           p.use();
           ctx.texture(moments).bind(0);
-          p.set("uInput", 0).set("uSize", size).set("uOffset", offset);
+          p.set("uInput", 0).set("uSize", size).set("uOffset", offset).set("uScale", scale);
           glDispatchCompute(GLuint((size + 63) / 64), 1, 1);
           glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         }
-        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, satDesc.format);
       });
 }
 
@@ -110,7 +134,9 @@ void addMomentView(FrameGraph& frame, const std::string& technique, const std::s
 
 void bindMomentSat(PassContext& ctx, gl::Program& p, const MomentMapConfig& config, int unit) {
   ctx.texture(momentSatResource(config.technique)).bind(GLuint(unit));
-  p.set("uSat", unit).set("uSatOffset", glm::vec4(config.satOffset ? 0.5f : 0.0f));
+  p.set("uSat", unit)
+      .set("uSatOffset", glm::vec4(config.satOffset ? 0.5f : 0.0f))
+      .set("uSatScale", momentSatScale(ctx.params, config));
 }
 
 } // namespace rtlab

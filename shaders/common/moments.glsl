@@ -1,16 +1,19 @@
 // Box-filtered moments from a summed-area table, and the two reconstructions: Chebyshev's
 // one-tailed bound on 2 moments (variance shadow maps) and the Hamburger 4-moment bound (moment
 // shadow maps). Needs shadow_space.glsl (uMapResolution).
-uniform sampler2D uSat;       // inclusive prefix sums of (moments - uSatOffset)
+uniform usampler2D uSat;      // inclusive prefix sums of round((moments - uSatOffset) * uSatScale)
 uniform vec4 uSatOffset;
+uniform float uSatScale;      // fixed-point units per moment unit (a power of two)
 
-vec4 satAt(ivec2 p) {
-  if (p.x < 0 || p.y < 0) return vec4(0.0);
+uvec4 satAt(ivec2 p) {
+  if (p.x < 0 || p.y < 0) return uvec4(0u);
   return texelFetch(uSat, p, 0);
 }
 
 // Mean of the moments over the texel box of half-width `radius` (texels) around uv, clipped to
-// the map. At least one texel.
+// the map. At least one texel. The four-corner difference wraps modulo 2^32 like the table's
+// sums, so the box's sum is exact (sat.comp); only its conversion to float rounds, relative to
+// the box's own sum.
 vec4 boxMoments(vec2 uv, float radius) {
   int size = int(uMapResolution);
   vec2 center = uv * uMapResolution;
@@ -18,9 +21,9 @@ vec4 boxMoments(vec2 uv, float radius) {
   ivec2 lo = clamp(ivec2(floor(center - r)), ivec2(0), ivec2(size - 1));
   ivec2 hi = clamp(ivec2(floor(center + r)), ivec2(0), ivec2(size - 1));
   hi = max(hi, lo);
-  vec4 sum = satAt(hi) - satAt(ivec2(lo.x - 1, hi.y)) - satAt(ivec2(hi.x, lo.y - 1)) + satAt(lo - 1);
+  uvec4 sum = satAt(hi) - satAt(ivec2(lo.x - 1, hi.y)) - satAt(ivec2(hi.x, lo.y - 1)) + satAt(lo - 1);
   float area = float((hi.x - lo.x + 1) * (hi.y - lo.y + 1));
-  return sum / area + uSatOffset;
+  return vec4(ivec4(sum)) / (area * uSatScale) + uSatOffset;
 }
 
 // P(depth >= t) <= sigma^2 / (sigma^2 + (t - mu)^2) for t > mu (Chebyshev); 1 otherwise.

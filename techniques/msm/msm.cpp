@@ -20,34 +20,39 @@ public:
     info.title = "Moment shadow mapping (Peters & Klein 2015)";
     info.summary = "Hamburger 4-moment bound over a box from a summed-area table, sized by a blocker estimate";
     info.params = {
-        ParamSpec::choice("msm.format", "Moment format", {"rgba32f", "rgba16f_optimized"}, 0).withFlags(kParamRealloc | kParamRecompile)
-            .withHelp("32-bit float moments, or 16-bit moments with the paper's optimized quantization transform"),
+        ParamSpec::choice("msm.format", "Moment format", {"rgba32f", "rgba16_optimized", "rgba16f_optimized"}, 1)
+            .withFlags(kParamRealloc | kParamRecompile)
+            .withHelp("Storage of the moments, always in the paper's optimized basis: 32-bit float, 16-bit normalized "
+                      "integers (the paper's 64-bit MSM), or 16-bit half floats (too coarse: speckles)"),
         ParamSpec::real("msm.moment_bias", "Moment bias", 3e-5, 1e-7, 1e-1).logScale()
             .withHelp("Moments are pulled towards those of a uniform depth distribution by this much (alpha), keeping the Hankel matrix invertible"),
         ParamSpec::boolean("msm.sat_offset", "Offset before summing", true)
-            .withHelp("Subtract 0.5 from the moments before building the summed-area table"),
+            .withHelp("Subtract 0.5 from the moments before building the fixed-point summed-area table (halves its sums: one more bit)"),
     };
     for (auto& spec : softShadowParams("msm", 64.0, 256.0, 256.0)) info.params.push_back(spec);
     info.debugViews = softShadowDebugViews("msm");
-    info.debugViews.push_back({"msm.moments", 1, "first channel of the moment map as stored (z, or its optimized transform)"});
+    info.debugViews.push_back({"msm.moments", 1, "first channel of the moment map as stored (the optimized transform of z^1..z^4)"});
     return info;
   }
   const TechniqueInfo& info() const override { return m_info; }
 
   void setup(FrameGraph& frame) override {
-    const bool optimized = frame.params().getEnumName("msm.format") == "rgba16f_optimized";
+    const std::string& format = frame.params().getEnumName("msm.format");
     MomentMapConfig config;
     config.technique = "msm";
     config.moments = 4;
-    config.format = optimized ? GL_RGBA16F : GL_RGBA32F;
-    config.optimized = optimized;
+    config.format = format == "rgba16_optimized" ? GL_RGBA16 : format == "rgba16f_optimized" ? GL_RGBA16F : GL_RGBA32F;
+    // Every format stores, and the table sums, the moments in the optimized basis: its
+    // fixed-point rounding then disturbs the 4MSM bound as little as the paper's 16-bit
+    // quantization does (README, "Speckles").
+    config.optimized = true;
     config.satOffset = frame.params().getBool("msm.sat_offset");
     addMomentMapPasses(frame, config);
     ShadowScreenPass pass;
     pass.fragment = "msm/visibility.frag";
     pass.depthMap = false;
     pass.reads = {momentSatResource("msm")};
-    if (optimized) pass.defines.push_back("OPTIMIZED");
+    pass.defines.push_back("OPTIMIZED");
     pass.bind = [config](PassContext& ctx, gl::Program& p) {
       bindMomentSat(ctx, p, config, 3);
       p.set("uMomentBias", ctx.params.getFloat("msm.moment_bias"));

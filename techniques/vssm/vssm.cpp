@@ -21,9 +21,9 @@ public:
     info.summary = "PCSS's blocker search and filtering in constant time from a summed-area table of (z, z^2)";
     info.params = {
         ParamSpec::choice("vssm.format", "Moment format", {"rg32f", "rg16f"}, 0).withFlags(kParamRealloc)
-            .withHelp("Storage of the moment map (the summed-area table is always 32-bit float)"),
+            .withHelp("Storage of the moment map (the summed-area table is always 32-bit fixed point)"),
         ParamSpec::boolean("vssm.sat_offset", "Offset before summing", true)
-            .withHelp("Subtract 0.5 from the moments before building the summed-area table (float precision of large sums)"),
+            .withHelp("Subtract 0.5 from the moments before building the fixed-point summed-area table (halves its sums: one more bit)"),
         ParamSpec::real("vssm.min_variance", "Minimum variance", 1e-5, 1e-8, 1e-2).logScale()
             .withHelp("Variance floor of Chebyshev's bound (against acne on planar receivers)"),
         ParamSpec::real("vssm.bleed_reduction", "Light-bleeding reduction", 0.2, 0.0, 0.95)
