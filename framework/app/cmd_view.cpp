@@ -31,10 +31,12 @@ int runView(int argc, char** argv) {
   specs.push_back({"--script", "", true, "FILE", "run a JSON list of actions (docs/viewer-scripts.md)"});
   specs.push_back(
       {"--bookmarks", "", true, "FILE", "lecture bookmarks, stepped with the arrow keys (docs/viewer-scripts.md)"});
+  specs.push_back({"--export-notes", "", true, "FILE",
+                   "write the --bookmarks file's speaker notes as Markdown and exit (no window)"});
   Args args("view", specs, argc, argv, 2);
   if (args.help()) {
     std::cout << formatHelp("rtlab view [scene and frame options] [--frames N --screenshot FILE] [--script FILE] "
-                            "[--bookmarks FILE]",
+                            "[--bookmarks FILE [--export-notes OUT.md]]",
                             "The lecture viewer (needs a display; docs/viewer.md). Esc or closing the window quits.\n"
                             "--size is the window's initial size; --backend applies to headless commands only.",
                             specs);
@@ -53,6 +55,13 @@ int runView(int argc, char** argv) {
     options.bookmarks = loadBookmarks(options.bookmarksSource);
     validateBookmarks(options.bookmarks, options.frame.params, registry, options.bookmarksSource,
                       options.frame.options.sceneSpec);
+  }
+  if (args.has("--export-notes")) {
+    const std::string out = args.get("--export-notes");
+    if (options.bookmarksSource.empty()) usageError("--export-notes needs --bookmarks FILE (the notes' source)");
+    checkOutputPath(out);
+    writeTextAtomically(out, bookmarkNotesMarkdown(options.bookmarks, options.bookmarksSource));
+    return 0;
   }
   if (args.has("--script")) {
     options.script = loadScript(args.get("--script"));

@@ -10,14 +10,16 @@
 
 namespace rtlab {
 
-// The whole panel: a window docked to the left edge with collapsing sections.
-void drawViewerPanel(ViewerState& state);
+// The whole panel: a window filling state.layout.panel, resizable at its right edge, with
+// collapsing sections (and speaker notes in lecture mode); hidden, a button to show it again
+// when the mouse is at the window's top left. `showTransient`: false in a frame that goes to a
+// file, which then shows no confirmation status ("screenshot a.png").
+void drawViewerPanel(ViewerState& state, bool showTransient, int windowWidth);
 
-// The top-right corner: frame time (and its method), render size, and in compare mode the
-// reference's sample count with the live RMSE and FLIP.
-void drawInfoOverlay(const ViewerState& state, int renderWidth, int renderHeight);
-// Lecture mode's caption: the current bookmark's name in large text at the bottom of the window.
-void drawLectureCaption(const ViewerState& state);
+// What is drawn on the frame's region, never over the panel: the top-right info (frame time,
+// render size, live RMSE and FLIP), the wipe's two labels, the colour bar's min/max and name, and
+// lecture mode's caption (the bookmark's name) at the bottom right; text wraps to the region.
+void drawFrameOverlays(const ViewerState& state, int renderWidth, int renderHeight);
 
 // Sections (each in its own file).
 void drawScenePanel(ViewerState& state);     // scene picker, presets, bookmarks    (scene_panel.cpp)

@@ -104,12 +104,36 @@ void helpTooltip(const char* text) {
   ImGui::EndTooltip();
 }
 
+bool labelFits(const char* label, float after) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  return ImGui::CalcTextSize(label).x + style.ItemSpacing.x + after <= ImGui::GetContentRegionAvail().x;
+}
+
+void wrappedLabel(const char* label) {
+  ImGui::PushTextWrapPos(0.0f); // the window's right edge
+  ImGui::TextUnformatted(label);
+  ImGui::PopTextWrapPos();
+}
+
 bool drawParamControl(const ParamSpec& spec, ParamValue& value) {
   ImGui::PushID(spec.key.c_str());
-  ImGui::TextUnformatted(spec.label.c_str());
-  if (helpMarkerHovered()) helpTooltip(tooltipText(spec).c_str());
+  // The label, "(?)" and "reset" share a line when they fit; a longer label wraps (never cut at
+  // the panel's edge) and the markers follow on the next line.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const bool isDefault = value == spec.def;
+  const float markers = ImGui::CalcTextSize("(?)").x +
+                        (isDefault ? 0.0f
+                                   : style.ItemSpacing.x + ImGui::CalcTextSize("reset").x + 2 * style.FramePadding.x);
+  if (labelFits(spec.label.c_str(), markers)) {
+    ImGui::TextUnformatted(spec.label.c_str());
+    if (helpMarkerHovered()) helpTooltip(tooltipText(spec).c_str());
+  } else {
+    wrappedLabel(spec.label.c_str());
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered()) helpTooltip(tooltipText(spec).c_str());
+  }
   bool changed = false;
-  if (!(value == spec.def)) {
+  if (!isDefault) {
     ImGui::SameLine();
     if (ImGui::SmallButton("reset")) {
       value = spec.def;

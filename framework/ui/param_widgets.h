@@ -25,6 +25,11 @@ inline void helpMarker(const char* text) {
   if (helpMarkerHovered()) helpTooltip(text);
 }
 
+// True when `label` and `after` more pixels fit on the current line; else wrappedLabel draws it
+// wrapped at the window's edge (labels are never cut).
+bool labelFits(const char* label, float after = 0.0f);
+void wrappedLabel(const char* label);
+
 // An edit made in a panel, applied by the caller through the viewer's actions.
 struct ParamEdit {
   std::string key;

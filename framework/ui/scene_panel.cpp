@@ -8,7 +8,22 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
+
 namespace rtlab {
+namespace {
+
+// The next item's width so that it and `buttons` (labels of the buttons after it on its line)
+// fit in the panel: the buttons are never cut at the panel's edge.
+void widthBeforeButtons(std::initializer_list<const char*> buttons) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float width = 0.0f;
+  for (const char* b : buttons)
+    width += ImGui::CalcTextSize(b).x + 2 * style.FramePadding.x + style.ItemSpacing.x;
+  ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - width, ImGui::GetFontSize() * 3));
+}
+
+} // namespace
 
 void drawScenePanel(ViewerState& state) {
   if (ImGui::BeginCombo("scene", state.sceneSpec.c_str())) {
@@ -18,21 +33,24 @@ void drawScenePanel(ViewerState& state) {
     ImGui::EndCombo();
   }
   helpMarker("A built-in scene, or type a .gltf/.glb path below, or drop a file onto the window.");
+  widthBeforeButtons({"Open"});
   ImGui::InputText("##scenefile", &state.scenePathInput);
   ImGui::SameLine();
   if (ImGui::Button("Open")) runGuarded(state, [&] { loadSceneAction(state, state.scenePathInput); });
 
+  widthBeforeButtons({"Save", "Load", "(?)"});
   ImGui::InputText("##preset", &state.presetPathInput);
   ImGui::SameLine();
   if (ImGui::Button("Save"))
     runGuarded(state, [&] {
       savePresetAction(state, state.presetPathInput);
-      state.status = "saved preset " + state.presetPathInput;
+      setStatus(state, "saved preset " + state.presetPathInput, true);
     });
   ImGui::SameLine();
   if (ImGui::Button("Load")) runGuarded(state, [&] { loadPresetAction(state, state.presetPathInput); });
   helpMarker("Presets use the --preset format: scene, techniques and every parameter.");
 
+  widthBeforeButtons({"Screenshot", "(?)"});
   ImGui::InputText("##shot", &state.screenshotPathInput);
   ImGui::SameLine();
   if (ImGui::Button("Screenshot")) state.pendingScreenshots.push_back(state.screenshotPathInput);
@@ -48,10 +66,15 @@ void drawScenePanel(ViewerState& state) {
         if (ImGui::Selectable(state.bookmarks[std::size_t(i)].name.c_str(), i == state.bookmark))
           runGuarded(state, [&] { bookmarkAction(state, i); });
       ImGui::EndCombo();
+    } else if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("%s", current.c_str()); // the name, when the combo's preview cuts it
     }
   }
   if (ImGui::Button("Reset camera (R)")) resetCameraAction(state);
-  ImGui::SameLine();
+  // The second button goes on the next line when both do not fit.
+  const float frameButton = ImGui::CalcTextSize("Frame scene (F)").x + 2 * ImGui::GetStyle().FramePadding.x;
+  if (ImGui::GetContentRegionAvail().x - ImGui::GetItemRectSize().x - ImGui::GetStyle().ItemSpacing.x >= frameButton)
+    ImGui::SameLine();
   if (ImGui::Button("Frame scene (F)")) frameSceneAction(state);
 }
 

@@ -60,7 +60,11 @@ void drawTechniquePanel(ViewerState& state) {
     for (const auto& id : state.selection.ordered()) {
       const TechniqueEntry& e = registry.get(id);
       if (e.info.stage != stage.id || e.info.params.empty()) continue;
-      if (ImGui::TreeNodeEx(id.c_str(), ImGuiTreeNodeFlags_DefaultOpen, "%s", e.info.title.c_str())) {
+      // The node is named by the id (short, never cut); the title follows wrapped.
+      if (ImGui::TreeNodeEx(id.c_str(), ImGuiTreeNodeFlags_DefaultOpen, "%s", id.c_str())) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+        wrappedLabel(e.info.title.c_str());
+        ImGui::PopStyleColor();
         drawParamGroup(state.params, id + ".", edits);
         ImGui::TreePop();
       }

@@ -11,7 +11,7 @@
 namespace rtlab {
 
 void drawTimingsPanel(ViewerState& state) {
-  ImGui::Text("frame %.2f ms (%s)", state.frameMs, state.timingMethod.c_str());
+  ImGui::TextWrapped("frame %.2f ms (%s)", state.frameMs, state.timingMethod.c_str());
   if (!state.frameHistory.empty()) {
     // Read from the deque in place: no copy of the history every frame.
     const auto& history = state.frameHistory;

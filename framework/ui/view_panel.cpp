@@ -69,9 +69,9 @@ void drawComparePanel(ViewerState& state) {
   helpMarker("Freezes the current picture as the right side of the snapshot wipe.");
   const auto& r = state.reference;
   if (!r.aov.empty()) {
-    ImGui::Text("reference: %s, %d spp%s", r.aov.c_str(), r.samples, r.running ? " (refining)" : "");
+    ImGui::TextWrapped("reference: %s, %d spp%s", r.aov.c_str(), r.samples, r.running ? " (refining)" : "");
     if (r.rmse)
-      ImGui::Text("RMSE %.4f  FLIP %.4f  at %d spp", *r.rmse, r.flip.value_or(0.0), r.metricsSamples);
+      ImGui::TextWrapped("RMSE %.4f  FLIP %.4f  at %d spp", *r.rmse, r.flip.value_or(0.0), r.metricsSamples);
     else
       ImGui::TextDisabled("%s",
                           r.waiting.empty() ? "metrics once the reference has converged enough" : r.waiting.c_str());

@@ -39,7 +39,8 @@ Bookmark parseBookmark(const json& j, const std::string& at) {
   b.name = requireString(j, "name", at);
   const std::string where = at + " ('" + b.name + "')";
   if (b.name.empty()) usageError(where + ": \"name\" must not be empty");
-  rejectUnknownFields(j, {"name", "scene", "techniques", "params", "camera", "view", "compare"}, where);
+  rejectUnknownFields(j, {"name", "scene", "techniques", "params", "camera", "view", "compare", "notes", "panel", "sections"},
+                      where);
   b.scene = optionalString(j, "scene", where);
   b.techniques = optionalStringList(j, "techniques", where);
   if (j.contains("params")) {
@@ -64,6 +65,12 @@ Bookmark parseBookmark(const json& j, const std::string& at) {
     checkCompareFields(j["compare"], w);
     b.compare = j["compare"];
   }
+  b.notes = optionalString(j, "notes", where).value_or("");
+  b.panel = optionalBool(j, "panel", where);
+  if (j.contains("sections")) {
+    checkSectionsField(j["sections"], where + ": \"sections\"");
+    b.sections = j["sections"];
+  }
   return b;
 }
 
@@ -83,6 +90,9 @@ nlohmann::ordered_json orderedBookmark(const Bookmark& b) {
   }
   if (!b.view.empty()) j["view"] = b.view;
   if (!b.compare.empty()) j["compare"] = b.compare;
+  if (b.panel) j["panel"] = *b.panel;
+  if (!b.sections.empty()) j["sections"] = b.sections;
+  if (!b.notes.empty()) j["notes"] = b.notes;
   return j;
 }
 
@@ -113,6 +123,30 @@ std::vector<Bookmark> loadBookmarks(const std::string& path) {
 nlohmann::json bookmarkToJson(const Bookmark& bookmark) {
   // Same content as the saved form; nlohmann::json keeps keys sorted.
   return json(orderedBookmark(bookmark));
+}
+
+std::string bookmarkNotesMarkdown(const std::vector<Bookmark>& bookmarks, const std::string& sourceName) {
+  std::string md = "# Speaker notes: " + std::filesystem::path(sourceName).filename().string() + "\n";
+  for (std::size_t i = 0; i < bookmarks.size(); ++i) {
+    const Bookmark& b = bookmarks[i];
+    md += "\n## " + std::to_string(i + 1) + ". " + b.name + "\n\n";
+    std::string setup;
+    auto add = [&](const std::string& part) { setup += (setup.empty() ? "" : "; ") + part; };
+    if (b.scene) add("scene `" + *b.scene + "`");
+    if (b.techniques) {
+      std::string list;
+      for (const auto& id : *b.techniques)
+        list += (list.empty() ? "`" : ", `") + id + "`";
+      add("techniques " + (list.empty() ? std::string("none") : list));
+    }
+    if (b.compare.contains("mode") && b.compare["mode"] != "off")
+      add("compare " + b.compare["mode"].get<std::string>());
+    if (b.view.contains("mode") && b.view["mode"] != "off" && b.view.contains("aov"))
+      add("view `" + b.view["aov"].get<std::string>() + "` (" + b.view["mode"].get<std::string>() + ")");
+    if (!setup.empty()) md += "*" + setup + "*\n\n";
+    md += (b.notes.empty() ? std::string("(no notes)") : b.notes) + "\n";
+  }
+  return md;
 }
 
 void saveBookmarks(const std::string& path, const std::vector<Bookmark>& bookmarks) {

@@ -6,6 +6,8 @@
 //   "techniques": ["pcss"], "params": {"pcss.filter_samples": 32},
 //   "camera": {"position": [..], "target": [..], "fov": 45},
 //   "view": {"aov": "visibility", "mode": "full"}, "compare": {"mode": "reference", "divider": 0.5}}]}
+// "notes": speaker notes (shown in lecture mode, exported with --export-notes), "panel": show or
+// hide the side panel, "sections": {"Debug view": true} opens or closes panel sections.
 // Every field but "name" is optional; params as in presets.
 #pragma once
 #include <nlohmann/json.hpp>
@@ -27,6 +29,9 @@ struct Bookmark {
   std::optional<float> cameraFov;
   nlohmann::json view = nlohmann::json::object();    // {"aov", "mode", "min", "max", "false_color"}
   nlohmann::json compare = nlohmann::json::object(); // {"mode", "divider"}
+  std::string notes;                                 // speaker notes (may be empty)
+  std::optional<bool> panel;                         // show (true) or hide the side panel
+  nlohmann::json sections = nlohmann::json::object(); // {SECTION: open}
 };
 
 // Error(Input) naming the file and the bookmark for malformed files or fields of the wrong type.
@@ -35,6 +40,10 @@ std::vector<Bookmark> parseBookmarks(const std::string& text, const std::string&
 // Writes atomically (never a half-written file).
 void saveBookmarks(const std::string& path, const std::vector<Bookmark>& bookmarks);
 nlohmann::json bookmarkToJson(const Bookmark& bookmark);
+// The speaker notes of a lecture as Markdown: a title naming the file, then per bookmark a
+// heading "N. name", a line with its scene, techniques and compare/debug view, and its notes
+// ("(no notes)" when it has none). `rtlab view --bookmarks F --export-notes OUT.md` writes it.
+std::string bookmarkNotesMarkdown(const std::vector<Bookmark>& bookmarks, const std::string& sourceName);
 
 class ParamSet;
 class TechniqueRegistry;

@@ -21,6 +21,7 @@ void validateBookmarks(const std::vector<Bookmark>& bookmarks, const ParamSet& p
           if (id != "none") registry.get(id);
       checkViewFields(b.view, "\"view\""); // types and choices, for bookmarks built in code
       checkCompareFields(b.compare, "\"compare\"");
+      checkSectionsField(b.sections, "\"sections\"");
       if (b.view.contains("aov")) checkViewAov(b.view.at("aov").get<std::string>(), registry);
       if (b.scene && *b.scene != currentScene) continue;
       ParamSet copy = params;

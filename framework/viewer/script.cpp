@@ -101,6 +101,24 @@ void checkLecture(const json& a, const std::string& w) {
 void checkBookmark(const json& a, const std::string& w) {
   nonNegative(requireInteger(a, "index", w), "index", w);
 }
+void checkPanel(const json& a, const std::string& w) {
+  requireBool(a, "on", w);
+}
+void checkSection(const json& a, const std::string& w) {
+  const std::string name = requireString(a, "name", w);
+  optionalBool(a, "open", w);
+  checkSectionName(name, w);
+}
+void checkRamp(const json& a, const std::string& w) {
+  requireString(a, "key", w);
+  requireNumber(a, "from", w);
+  requireNumber(a, "to", w);
+  const long long frames = requireInteger(a, "frames", w);
+  if (frames < 1) usageError(w + ": \"frames\" must be >= 1, got " + std::to_string(frames));
+}
+void checkRecord(const json& a, const std::string& w) {
+  if (requireString(a, "dir", w).empty()) usageError(w + ": \"dir\" must not be empty");
+}
 
 const std::vector<ActionSpec>& actionSpecs() {
   static const std::vector<ActionSpec> specs = {
@@ -121,6 +139,11 @@ const std::vector<ActionSpec>& actionSpecs() {
       {"render_scale", {"value"}, checkRenderScale},
       {"lecture", {"on"}, checkLecture},
       {"bookmark", {"index"}, checkBookmark},
+      {"panel", {"on"}, checkPanel},
+      {"section", {"name", "open"}, checkSection},
+      {"ramp", {"key", "from", "to", "frames"}, checkRamp},
+      {"record", {"dir"}, checkRecord},
+      {"stop", {}, checkNothing},
       {"quit", {}, checkNothing},
   };
   return specs;

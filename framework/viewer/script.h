@@ -4,7 +4,7 @@
 // a one-line message naming the action's index, and never half-runs. GL-free, unit-tested.
 //
 // Actions (objects with an "action" field):
-//   {"action": "technique", "stage": "shadow", "id": "pcss"}      id "off" turns the stage off
+//   {"action": "technique", "stage": "shadow", "id": "pcss"}      id "off" or "none" turns the stage off
 //   {"action": "set", "key": "pcss.filter_samples", "value": 32}  value as in presets
 //   {"action": "reset", "key": "pcss.filter_samples"}
 //   {"action": "camera", "position": [x,y,z], "target": [x,y,z], "fov": 45}  each optional
@@ -24,6 +24,10 @@
 //   {"action": "render_scale", "value": 0.5}
 //   {"action": "lecture", "on": true}
 //   {"action": "bookmark", "index": 0}                             jump to bookmark N
+//   {"action": "panel", "on": false}                               hide (show) the side panel
+//   {"action": "section", "name": "Debug view", "open": true}      open (close) a panel section
+//   {"action": "ramp", "key": "pcf.radius", "from": 0, "to": 8, "frames": 30}  one step a frame
+//   {"action": "record", "dir": "frames"} ... {"action": "stop"}   every frame drawn as DIR/frame_NNNNN.png
 //   {"action": "quit"}
 #pragma once
 #include <nlohmann/json.hpp>
@@ -66,12 +70,17 @@ void checkScriptAction(const ScriptAction& action);
 
 class ParamSet;
 class TechniqueRegistry;
+// The file "record" writes for the n-th recorded frame (from 0): DIR/frame_00000.png, ...
+std::string recordedFramePath(const std::string& dir, long n);
+
 // Checks every "technique", "set" and "reset" action against the registry and a copy of the
 // parameters (values applied in order, so a later "set" may depend on an earlier one's key
 // existing); Error(Usage) naming the action index and the key.
 // Also checks that a "view" AOV is a built-in AOV or a registered technique's debug view, that
 // "load_preset" files load and apply (unless an earlier "save_preset" of the script writes
 // them), and that "screenshot", "report" and "save_preset" paths are writable (Error(Output)).
+// A "ramp" needs a numeric (float or int) key and both ends in its range; a "record" an existing
+// writable directory (Error(Output)) and no recording already running; a "stop" a running one.
 void validateScript(const std::vector<ScriptAction>& script, const ParamSet& params,
                     const TechniqueRegistry& registry);
 // Error(Usage) naming the action if a "bookmark" action's index is not below `bookmarkCount`.

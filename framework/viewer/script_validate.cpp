@@ -12,6 +12,8 @@
 #include "viewer/script.h"
 #include "viewer/view_fields.h"
 
+#include <cstdio>
+#include <filesystem>
 #include <set>
 
 namespace rtlab {
@@ -28,7 +30,7 @@ void checkTechniqueAction(const json& args, const TechniqueRegistry& registry) {
       list += (list.empty() ? "" : ", ") + s.id;
     usageError("unknown stage '" + stage + "' (known: " + list + ")");
   }
-  if (id == "off") return;
+  if (id == "off" || id == "none") return; // "none" as `-t none` spells it
   const TechniqueEntry& entry = registry.get(id); // Error(Usage) listing the known ids
   if (entry.info.stage != stage)
     usageError("technique '" + id + "' belongs to stage '" + entry.info.stage + "', not '" + stage + "'");
@@ -55,12 +57,36 @@ void checkLoadPreset(const std::string& path, ParamSet& params, const TechniqueR
   applyPreset(preset, params, path);
 }
 
+void checkRampAction(const json& args, ParamSet& params) {
+  const std::string key = args.at("key").get<std::string>();
+  const ParamSpec& spec = params.spec(key); // Error(Usage) for an unknown key
+  if (!spec.isNumeric())
+    usageError("ramp: '" + key + "' is a " + paramTypeName(spec.type) + " key; a ramp needs a float or int key");
+  params.setJson(key, args.at("from"));
+  params.setJson(key, args.at("to")); // the value the ramp ends at
+}
+
+void checkRecordAction(const json& args) {
+  namespace fs = std::filesystem;
+  const std::string dir = args.at("dir").get<std::string>();
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) outputError("record: directory '" + dir + "' does not exist");
+  checkOutputPath(recordedFramePath(dir, 0));
+}
+
 } // namespace
+
+std::string recordedFramePath(const std::string& dir, long n) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05ld.png", n);
+  return (std::filesystem::path(dir) / name).string();
+}
 
 void validateScript(const std::vector<ScriptAction>& script, const ParamSet& params,
                     const TechniqueRegistry& registry) {
   ParamSet copy = params;
   std::set<std::string> savedPresets; // written by an earlier "save_preset": checked when saved
+  bool recording = false;
   for (const ScriptAction& a : script) {
     checkScriptAction(a); // so every field read below exists with its type
     try {
@@ -81,6 +107,15 @@ void validateScript(const std::vector<ScriptAction>& script, const ParamSet& par
       } else if (a.action == "save_preset") {
         checkOutputPath(args.at("file").get<std::string>());
         savedPresets.insert(args.at("file").get<std::string>());
+      } else if (a.action == "ramp") {
+        checkRampAction(args, copy);
+      } else if (a.action == "record") {
+        if (recording) usageError("a recording is already running (end it with \"stop\" first)");
+        checkRecordAction(args);
+        recording = true;
+      } else if (a.action == "stop") {
+        if (!recording) usageError("no recording to stop (start one with \"record\")");
+        recording = false;
       } else if (a.action == "screenshot" || a.action == "report") {
         checkOutputPath(args.at("file").get<std::string>());
       }

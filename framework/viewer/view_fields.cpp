@@ -32,4 +32,28 @@ void checkViewAov(const std::string& aov, const TechniqueRegistry& registry) {
   usageError("unknown AOV '" + aov + "' (see 'rtlab list')");
 }
 
+const std::vector<std::string>& viewerSectionNames() {
+  static const std::vector<std::string> names = {"Speaker notes", "Scene",      "Techniques", "Lights",
+                                                 "Tone mapping",  "Debug view", "Compare",    "Timings"};
+  return names;
+}
+
+void checkSectionName(const std::string& name, const std::string& where) {
+  for (const auto& known : viewerSectionNames())
+    if (name == known) return;
+  std::string list;
+  for (const auto& known : viewerSectionNames())
+    list += (list.empty() ? "\"" : ", \"") + known + "\"";
+  usageError(where + ": unknown section \"" + name + "\" (known: " + list + ")");
+}
+
+void checkSectionsField(const nlohmann::json& object, const std::string& where) {
+  requireObject(object, where);
+  for (const auto& [name, open] : object.items()) {
+    if (!open.is_boolean())
+      inputError(where + ": \"" + name + "\" must be a boolean (open or closed), got " + std::string(open.type_name()));
+    checkSectionName(name, where);
+  }
+}
+
 } // namespace rtlab

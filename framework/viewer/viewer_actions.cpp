@@ -39,9 +39,17 @@ void applyBookmark(ViewerState& state, const Bookmark& b) {
     cameraAction(state, b.cameraPosition, b.cameraTarget, b.cameraFov);
   if (!b.view.empty()) viewAction(state, b.view);
   if (!b.compare.empty()) compareAction(state, b.compare);
+  if (b.panel) state.showPanel = *b.panel;
+  for (const auto& [name, open] : b.sections.items())
+    sectionAction(state, name, open.get<bool>());
 }
 
 } // namespace
+
+void setStatus(ViewerState& state, std::string message, bool transient) {
+  state.status = std::move(message);
+  state.statusTransient = transient;
+}
 
 const char* debugModeName(DebugMode mode) {
   switch (mode) {
@@ -98,7 +106,7 @@ void loadSceneAction(ViewerState& state, const std::string& spec) {
 
 void selectTechniqueAction(ViewerState& state, const std::string& stage, const std::string& id) {
   if (!findStage(stage)) usageError("unknown stage '" + stage + "'");
-  if (id == "off") {
+  if (id == "off" || id == "none") { // "none" as `-t none` and 'rtlab list' spell it
     for (const auto& active : state.selection.ordered())
       if (state.registry->get(active).info.stage == stage) state.selection.deactivate(active);
   } else {
@@ -184,6 +192,20 @@ void compareAction(ViewerState& state, const nlohmann::json& fields) {
   if (auto divider = optionalNumber(fields, "divider", where)) state.compare.divider = float(*divider);
 }
 
+void panelAction(ViewerState& state, bool shown) {
+  state.showPanel = shown;
+}
+
+void sectionAction(ViewerState& state, const std::string& name, bool open) {
+  checkSectionName(name, "section");
+  state.sectionRequests.emplace_back(name, open);
+}
+
+double rampValue(double from, double to, long step, long frames) {
+  if (step >= frames) return to; // the last frame holds exactly the end value
+  return from + (to - from) * double(step) / double(frames);
+}
+
 void renderScaleAction(ViewerState& state, double scale) {
   requireRange(scale, kRenderScaleMin, kRenderScaleMax, "render scale", "render_scale");
   state.renderScale = float(scale);
@@ -220,7 +242,8 @@ void bookmarkAction(ViewerState& state, int index) {
   ViewerState next = state;
   applyBookmark(next, b);
   next.bookmark = index;
-  next.status = "bookmark " + std::to_string(index + 1) + "/" + std::to_string(next.bookmarks.size()) + ": " + b.name;
+  setStatus(next, "bookmark " + std::to_string(index + 1) + "/" + std::to_string(next.bookmarks.size()) + ": " + b.name,
+            true);
   state = std::move(next);
 }
 

@@ -17,7 +17,7 @@ class TechniqueRegistry;
 // Loads a scene (built-in name or .gltf/.glb file) keeping the techniques and every parameter
 // that is not a light or camera key; the camera goes to the new scene's camera.
 void loadSceneAction(ViewerState& state, const std::string& spec);
-// Activates `id` in `stage` ("off": deactivates the stage's technique).
+// Activates `id` in `stage` ("off" or "none": deactivates the stage's technique).
 void selectTechniqueAction(ViewerState& state, const std::string& stage, const std::string& id);
 // Switches one technique on or off by itself (a stack stage's checkbox; on in an exclusive stage
 // replaces the stage's technique). Error(Usage) for an unknown id.
@@ -35,6 +35,13 @@ void frameSceneAction(ViewerState& state);
 // Applies a "view" object / a "compare" object (viewer/view_fields.h), fields optional.
 void viewAction(ViewerState& state, const nlohmann::json& fields);
 void compareAction(ViewerState& state, const nlohmann::json& fields);
+// Shows or hides the side panel (the frame then fills the window).
+void panelAction(ViewerState& state, bool shown);
+// Opens or closes a panel section at the next panel draw (Error(Usage) for an unknown name).
+void sectionAction(ViewerState& state, const std::string& name, bool open);
+// The value a "ramp" sets at `step` of `frames` (1..frames): linear from `from` (step 0) to
+// exactly `to` at the last step.
+double rampValue(double from, double to, long step, long frames);
 void renderScaleAction(ViewerState& state, double scale); // Error(Usage) outside [0.1, 1]
 // Presets in the `--preset` format (CONTRACT.md); loading keeps the current scene.
 void savePresetAction(const ViewerState& state, const std::string& path);

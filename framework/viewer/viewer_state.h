@@ -8,6 +8,7 @@
 #include "scene/scene.h"
 #include "viewer/bookmarks.h"
 #include "viewer/camera_controller.h"
+#include "viewer/viewer_layout.h"
 
 #include <deque>
 #include <optional>
@@ -26,6 +27,10 @@ struct DebugViewSettings {
   bool falseColor = false;         // scalar data through a color map
   bool autoRangeRequested = false; // set min/max from the next frame's values (valid pixels)
 };
+
+inline constexpr float kPanelWidthEmDefault = 22.0f; // the panel's default width, in font sizes
+inline constexpr float kPanelWidthEmMin = 8.0f;      // the narrowest the panel can be dragged
+inline constexpr float kPanelMaxFraction = 0.5f;     // the widest: this fraction of the window
 
 struct CompareSettings {
   CompareMode mode = CompareMode::Off;
@@ -59,6 +64,17 @@ struct ViewerState {
   std::string bookmarksSource;
   int bookmark = -1; // the last bookmark applied
 
+  // Layout (docs/viewer.md "Window, camera and keys"): the panel is a side region left of the
+  // frame, resizable by dragging its right edge and hidden with Tab, the panel's button or a
+  // script's "panel" action; the frame is rendered at the size of the region beside it.
+  bool showPanel = true;
+  float panelWidthEm = kPanelWidthEmDefault; // the panel's width in font-size units (follows lecture mode)
+  // Sections (panel headers) to open (true) or close (false) at the next panel draw, by name
+  // (viewerSectionNames()); scripts' "section" action and bookmarks' "sections" fill it.
+  std::vector<std::pair<std::string, bool>> sectionRequests;
+  std::vector<std::string> openSections; // the sections open at the last panel draw (for reports)
+  ViewerLayout layout; // this frame's panel, frame and colour-bar regions (framebuffer pixels)
+
   // Measured.
   long frames = 0;                       // frames rendered since start
   long glErrors = 0;                     // GL errors counted over every frame
@@ -68,6 +84,9 @@ struct ViewerState {
   std::string timingMethod;              // "cpu-finish" | "gpu-query"
   std::vector<std::string> shaderErrors; // file:line messages of failed (re)compiles
   std::string status;                    // the last action's message for the status line
+  // The status is transient (a confirmation such as "screenshot a.png" or "bookmark 2/6"): it
+  // is left out of every frame written to a file (screenshots, recorded frames). Errors are not.
+  bool statusTransient = false;
 
   // Compare mode's reference (reference_view.h): which AOV, how far it is, and the live metrics of
   // the visible frame against it (empty until computed).
@@ -82,12 +101,29 @@ struct ViewerState {
   } reference;
   bool snapshotRequested = false; // freeze the current picture as compare side B
 
+  // The scale bar under a data view (a debug view, a reference wipe of data, the difference heat
+  // map), drawn at layout.colorBar by the frame and labelled by the overlay: what the last frame
+  // showed.
+  struct {
+    bool shown = false;
+    bool falseColor = false; // the false-color ramp, else gray
+    float min = 0.0f, max = 1.0f;
+    std::string label; // what the values are ("visibility", "|frame - reference|")
+  } colorBar;
+  // The wipe's two halves as the overlay labels them (empty when no wipe is shown).
+  std::string wipeLeft, wipeRight;
+
   // Text fields of the panels.
   std::string scenePathInput, presetPathInput = "rtlab_preset.json", screenshotPathInput = "rtlab_view.png";
 
   bool quit = false;
   std::vector<std::string> pendingScreenshots; // written after the next frame's UI is drawn
+  std::string recordDir;                       // a script's "record": every frame drawn is written there
+  long recordedFrames = 0;                     // frames written since "record" started
 };
+
+// Sets the status line: `transient` for confirmations, false for errors and warnings.
+void setStatus(ViewerState& state, std::string message, bool transient);
 
 const char* debugModeName(DebugMode mode);
 const char* compareModeName(CompareMode mode);

@@ -2,7 +2,8 @@
 // The viewer's picture (framework/viewer/window/frame_display.cpp): image A alone, or A and B
 // split by a vertical wipe at uDivider, or the heat map of |A - B|. Each side is either a
 // tone-mapped color image (sRGB-encoded here) or data mapped from [uMin, uMax] to [0, 1], in gray
-// or, for one-channel data, through a false-color ramp.
+// or, for one-channel data, through a false-color ramp. Mode 3 draws the scale bar itself, so
+// the bar and the picture share one ramp.
 #include "../common/color.glsl"
 
 in vec2 vUv;
@@ -15,7 +16,7 @@ uniform int uChannelsB;
 uniform float uMin;
 uniform float uMax;
 uniform bool uFalseColor;
-uniform int uMode;       // 0: A only, 1: wipe A | B, 2: difference heat map
+uniform int uMode;       // 0: A only, 1: wipe A | B, 2: difference heat map, 3: the colour scale
 uniform float uDivider;  // wipe position, fraction of the width from the left
 uniform float uDividerPx; // half width of the divider line in uv units
 
@@ -43,6 +44,10 @@ vec3 side(sampler2D image, int kind, int channels) {
 }
 
 void main() {
+  if (uMode == 3) { // the bar labelling a data view: its values from min (left) to max (right)
+    oColor = vec4(uFalseColor ? falseColor(vUv.x) : vec3(vUv.x), 1.0);
+    return;
+  }
   if (uMode == 2) {
     vec3 a = texture(uA, vUv).rgb, b = texture(uB, vUv).rgb;
     float d = abs(scalarOf(a, uChannelsA) - scalarOf(b, uChannelsB));

@@ -1,8 +1,9 @@
 // The window path: `rtlab view` under a virtual X display (Xvfb). A screenshot after 5 frames
-// shows the side panel over the frame: where the panel is (the left part of the window) the
-// image differs from a headless `rtlab render` of the same frame; right of it the two match
-// within 2/255 per channel on average (the same passes; only the context differs). Without a
-// display the command exits 4 naming xvfb-run; a script's "quit" exits 0.
+// shows the side panel beside the frame: where the panel is (the left part of the window) the
+// image differs from a headless `rtlab render` of the frame; the frame's region, rendered at its
+// own size, matches `rtlab render` at that size within 2/255 per channel on average (the same
+// passes; only the context differs). Without a display the command exits 4 naming xvfb-run; a
+// script's "quit" exits 0.
 #include "view_helpers.h"
 
 #include <gtest/gtest.h>
@@ -10,31 +11,33 @@
 namespace fs = std::filesystem;
 using namespace rtlab::test;
 
-TEST(View, ScreenshotAfterFiveFramesShowsThePanelOverTheFrame) {
+TEST(View, ScreenshotAfterFiveFramesShowsThePanelBesideTheFrame) {
   ASSERT_TRUE(fs::exists(kXvfbRun)) << "install xvfb (scripts/setup.sh --test-deps)";
   const fs::path dir = freshTestDir("view");
   const std::string shot = (dir / "window.png").string(), headless = (dir / "headless.png").string();
-  std::vector<std::string> frame = {"--scene", "contact", "-t", "shadow_map"};
-  frame.insert(frame.end(), kViewSize.begin(), kViewSize.end());
+  const std::vector<std::string> frame = {"--scene", "contact", "-t", "shadow_map"};
   std::vector<std::string> view = frame;
+  view.insert(view.end(), kViewSize.begin(), kViewSize.end());
   for (const char* a : {"--frames", "5", "--screenshot"})
     view.push_back(a);
   view.push_back(shot);
   auto r = runView(view);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  std::vector<std::string> render = {"render"};
-  render.insert(render.end(), frame.begin(), frame.end());
-  render.push_back("--out");
-  render.push_back(headless);
-  r = runProcess(RTLAB_BINARY, render, 120);
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  const rtlab::Image a = rtlab::readImage(shot), b = rtlab::readImage(headless);
+  const rtlab::Image a = rtlab::readImage(shot);
   ASSERT_EQ(a.width, 320);
   ASSERT_EQ(a.height, 180);
-  // The panel is at most 45% of the window's width (ui/panels.cpp): its text and frames make the
-  // left third differ strongly; the right 45% is the frame alone.
-  EXPECT_GT(regionDiff(a, b, 0.0, 0.33), 0.03) << "no panel in the window's screenshot";
-  EXPECT_LT(regionDiff(a, b, 0.55, 1.0), 2.0 / 255.0) << "the frame beside the panel differs from rtlab render";
+  // The panel is 22 font sizes wide, at most half the window (viewer/viewer_layout.h): at 320x180
+  // the left half. Its text and frames make the left third differ strongly from the frame
+  // rendered at the window's size; the right half is the frame rendered at 160x180.
+  r = renderAt(frame, 320, 180, headless);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_GT(regionDiff(a, rtlab::readImage(headless), 0.0, 0.33), 0.03) << "no panel in the window's screenshot";
+  r = renderAt(frame, 160, 180, headless);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const rtlab::Image region = crop(a, nlohmann::json::array({160, 0, 160, 180}));
+  // Rows below 0.45: at 160 pixels wide the info overlay wraps to three lines at the top.
+  EXPECT_LT(regionDiff(region, rtlab::readImage(headless), 0.0, 1.0, 0.45, 1.0), 2.0 / 255.0)
+      << "the frame beside the panel differs from rtlab render at its size";
 }
 
 TEST(View, WithoutDisplayExits4SuggestingXvfbRun) {

@@ -62,6 +62,27 @@ inline double regionDiff(const Image& a, const Image& b, double x0, double x1, d
   return n ? sum / double(n) : 0.0;
 }
 
+// The pixels of `image` in the rectangle [x, y, width, height] (pixels, rows from the top): the
+// frame's region of a viewer screenshot (the report's layout.frame).
+inline Image crop(const Image& image, const nlohmann::json& rect) {
+  const int x0 = rect[0], y0 = rect[1], w = rect[2], h = rect[3];
+  Image out(w, h, image.channels);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < image.channels; ++c)
+        out.at(x, y, c) = image.at(x0 + x, y0 + y, c);
+  return out;
+}
+
+// `rtlab render ARGS... --size WxH --out OUT` (exit code checked by the caller).
+inline ProcessResult renderAt(std::vector<std::string> args, int width, int height, const std::string& out) {
+  args.insert(args.begin(), "render");
+  for (const std::string& a : {std::string("--size"), std::to_string(width) + "x" + std::to_string(height),
+                               std::string("--out"), out})
+    args.push_back(a);
+  return runProcess(RTLAB_BINARY, args, 120);
+}
+
 // The gray level of a one-channel image, replicated, to compare with a 3-channel screenshot.
 inline Image grayToRgb(const Image& gray) {
   Image rgb(gray.width, gray.height, 3);

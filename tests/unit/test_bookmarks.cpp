@@ -32,6 +32,9 @@ Bookmark full() {
   b.cameraFov = 37.5f;
   b.view = {{"aov", "visibility"}, {"mode", "pip"}, {"min", 0}, {"max", 0.5}, {"false_color", true}};
   b.compare = {{"mode", "reference"}, {"divider", 0.3}};
+  b.notes = "Drag the divider across the penumbra.\nThen switch to pcf.";
+  b.panel = false;
+  b.sections = {{"Debug view", true}, {"Timings", false}};
   return b;
 }
 
@@ -45,6 +48,9 @@ void expectSame(const Bookmark& a, const Bookmark& b) {
   EXPECT_EQ(a.cameraFov, b.cameraFov);
   EXPECT_EQ(a.view, b.view);
   EXPECT_EQ(a.compare, b.compare);
+  EXPECT_EQ(a.notes, b.notes);
+  EXPECT_EQ(a.panel, b.panel);
+  EXPECT_EQ(a.sections, b.sections);
 }
 
 Caught parse(const std::string& text) {
@@ -106,7 +112,10 @@ TEST(Bookmarks, MalformedBookmarksNameTheirIndexAndName) {
       {R"("second")", "bookmark 1 must be a JSON object"},
       {R"({"scene": "contact"})", "bookmark 1: missing field \"name\""},
       {R"({"name": 2})", "bookmark 1: \"name\" must be a string"},
-      {R"({"name": "b", "notes": "x"})", "bookmark 1 ('b'): unknown field \"notes\""},
+      {R"({"name": "b", "speaker": "x"})", "bookmark 1 ('b'): unknown field \"speaker\""},
+      {R"({"name": "b", "notes": 3})", "bookmark 1 ('b'): \"notes\" must be a string"},
+      {R"({"name": "b", "panel": "hide"})", "bookmark 1 ('b'): \"panel\" must be a boolean"},
+      {R"({"name": "b", "sections": {"Timings": 1}})", "\"sections\": \"Timings\" must be a boolean"},
       {R"({"name": "b", "scene": 1})", "bookmark 1 ('b'): \"scene\" must be a string"},
       {R"({"name": "b", "techniques": "pcss"})", "bookmark 1 ('b'): \"techniques\" must be an array of strings"},
       {R"({"name": "b", "params": [1]})", "bookmark 1 ('b'): \"params\" must be a JSON object"},
@@ -128,6 +137,7 @@ TEST(Bookmarks, ValuesOutOfRangeOrChoicesAreUsageErrors) {
       {R"({"name": "b", "camera": {"position": [1, 2, 3], "target": [1, 2, 3]}})", "must differ"},
       {R"({"name": "b", "view": {"mode": "split"}})", "\"mode\" must be one of: full, pip, off"},
       {R"({"name": "b", "compare": {"divider": -0.1}})", "\"divider\" = -0.1 is out of range [0, 1]"},
+      {R"({"name": "b", "sections": {"Timing": true}})", "unknown section \"Timing\""},
   };
   for (const auto& [bookmark, message] : cases)
     checkCaught(parseSecond(bookmark), ExitCode::Usage, {"bookmarks 'talk.json' bookmark 1", message});
@@ -191,4 +201,23 @@ TEST(Bookmarks, ValidationChecksTechniquesKeysValuesAndAovs) {
   EXPECT_FALSE(validate(R"({"name": "b", "scene": "cornell", "params": {"light3.radius": 1}})").thrown);
   checkCaught(validate(R"({"name": "b", "scene": "cornell", "params": {"light3.radius": 1}})", "cornell"),
               ExitCode::Usage, {"bookmark 1 ('b')", "unknown key 'light3.radius'"});
+}
+
+// Speaker notes: exported as Markdown, a heading per bookmark in file order with its setup and
+// notes; a bookmark without notes says so.
+TEST(Bookmarks, NotesExportAsMarkdown) {
+  Bookmark bare;
+  bare.name = "Hard shadow";
+  bare.techniques = std::vector<std::string>{"shadow_map"};
+  const std::string md = bookmarkNotesMarkdown({full(), bare}, "/talks/shadows.json");
+  EXPECT_EQ(md.rfind("# Speaker notes: shadows.json\n", 0), 0u) << md;
+  const auto first = md.find("## 1. PCSS vs reference"), second = md.find("## 2. Hard shadow");
+  ASSERT_NE(first, std::string::npos) << md;
+  ASSERT_NE(second, std::string::npos) << md;
+  EXPECT_LT(first, second);
+  EXPECT_NE(md.find("Drag the divider across the penumbra.\nThen switch to pcf."), std::string::npos) << md;
+  EXPECT_NE(md.find("scene `contact`; techniques `pcss`, `ssao`; compare reference; view `visibility` (pip)"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("(no notes)", second), std::string::npos) << md;
 }

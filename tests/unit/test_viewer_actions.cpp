@@ -215,3 +215,47 @@ TEST(ViewerActions, ABookmarkThatFailsPartWayChangesNothing) {
   EXPECT_EQ(s.selection.ordered(), (std::vector<std::string>{"hard"}));
   EXPECT_EQ(s.bookmark, -1);
 }
+
+TEST(ViewerActions, TechniqueNoneTurnsTheStageOffAsOffDoes) {
+  ViewerState s = contactState();
+  selectTechniqueAction(s, "shadow", "hard");
+  selectTechniqueAction(s, "ao", "occ");
+  selectTechniqueAction(s, "shadow", "none");
+  EXPECT_EQ(s.selection.ordered(), (std::vector<std::string>{"occ"}));
+}
+
+TEST(ViewerActions, PanelSectionsAndBookmarkLayoutFields) {
+  ViewerState s = contactState();
+  panelAction(s, false);
+  EXPECT_FALSE(s.showPanel);
+  sectionAction(s, "Debug view", true);
+  checkCaught(catchError([&] { sectionAction(s, "Debug", true); }), ExitCode::Usage, {"unknown section"});
+  ASSERT_EQ(s.sectionRequests.size(), 1u);
+  EXPECT_EQ(s.sectionRequests[0], (std::pair<std::string, bool>{"Debug view", true}));
+  Bookmark b;
+  b.name = "panel back, timings closed";
+  b.panel = true;
+  b.sections = {{"Timings", false}};
+  s.bookmarks = {b};
+  bookmarkAction(s, 0);
+  EXPECT_TRUE(s.showPanel);
+  EXPECT_EQ(s.sectionRequests.back(), (std::pair<std::string, bool>{"Timings", false}));
+}
+
+TEST(ViewerActions, RampsAreLinearAndEndExactlyAtTheirEnd) {
+  EXPECT_DOUBLE_EQ(rampValue(0.0, 8.0, 1, 4), 2.0);
+  EXPECT_DOUBLE_EQ(rampValue(0.0, 8.0, 2, 4), 4.0);
+  EXPECT_EQ(rampValue(0.1, 0.7, 3, 3), 0.7); // exact, not 0.1 + 0.6 * 3 / 3
+  EXPECT_DOUBLE_EQ(rampValue(5.0, 1.0, 1, 2), 3.0);
+}
+
+TEST(ViewerActions, TransientStatusIsMarkedAndErrorsAreNot) {
+  ViewerState s = contactState();
+  Bookmark b;
+  b.name = "one";
+  s.bookmarks = {b};
+  bookmarkAction(s, 0);
+  EXPECT_TRUE(s.statusTransient) << "a bookmark's confirmation is transient";
+  setStatus(s, "unknown key", false);
+  EXPECT_FALSE(s.statusTransient);
+}

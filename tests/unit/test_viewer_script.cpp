@@ -82,6 +82,11 @@ TEST(ViewerScript, ParsesEveryAction) {
     {"action": "render_scale", "value": 0.5},
     {"action": "lecture", "on": true},
     {"action": "bookmark", "index": 0},
+    {"action": "panel", "on": false},
+    {"action": "section", "name": "Debug view", "open": true},
+    {"action": "ramp", "key": "sh.samples", "from": 1, "to": 64, "frames": 30},
+    {"action": "record", "dir": "frames"},
+    {"action": "stop"},
     {"action": "quit"}
   ])";
   const auto script = parseScript(text, "demo.json");
@@ -308,4 +313,56 @@ TEST(ViewerScript, TheReferenceDocumentsEveryAction) {
   ASSERT_FALSE(doc.empty());
   for (const auto& name : scriptActionNames())
     EXPECT_NE(doc.find("| `" + name + "` |"), std::string::npos) << "docs/viewer-scripts.md has no row for " << name;
+}
+
+// "none" is how `-t none` and 'rtlab list' name "no technique"; the script's technique action
+// takes it for one stage, as it takes "off".
+TEST(ViewerScript, TechniqueNoneTurnsAStageOff) {
+  const auto c = validate(R"([{"action": "technique", "stage": "shadow", "id": "none"}])");
+  EXPECT_FALSE(c.thrown) << c.message;
+}
+
+TEST(ViewerScript, LecturerActionsCheckTheirFields) {
+  checkCaught(parseOne(R"({"action": "panel"})"), ExitCode::Input, {"\"on\""});
+  checkCaught(parseOne(R"({"action": "panel", "on": 1})"), ExitCode::Input, {"\"on\""});
+  checkCaught(parseOne(R"({"action": "section", "name": "Debug"})"), ExitCode::Usage,
+              {"action 0 (\"section\")", "unknown section \"Debug\"", "\"Debug view\""});
+  checkCaught(parseOne(R"({"action": "section", "name": "Timings", "open": "yes"})"), ExitCode::Input, {"\"open\""});
+  checkCaught(parseOne(R"({"action": "ramp", "key": "sh.samples", "from": 1, "to": 2})"), ExitCode::Input,
+              {"\"frames\""});
+  checkCaught(parseOne(R"({"action": "ramp", "key": "sh.samples", "from": 1, "to": 2, "frames": 0})"),
+              ExitCode::Usage, {"\"frames\" must be >= 1"});
+  checkCaught(parseOne(R"({"action": "ramp", "key": "sh.samples", "from": 1, "to": 2, "frames": 2.5})"),
+              ExitCode::Input, {"\"frames\""});
+  checkCaught(parseOne(R"({"action": "record", "dir": ""})"), ExitCode::Usage, {"\"dir\" must not be empty"});
+  checkCaught(parseOne(R"({"action": "stop", "dir": "x"})"), ExitCode::Input, {"\"dir\""});
+}
+
+TEST(ViewerScript, RampsAreValidatedAgainstTheKey) {
+  EXPECT_FALSE(validate(R"([{"action": "ramp", "key": "occ.radius", "from": 0, "to": 2, "frames": 10}])").thrown);
+  checkCaught(validate(R"([{"action": "ramp", "key": "occ.radiu", "from": 0, "to": 2, "frames": 10}])"),
+              ExitCode::Usage, {"action 0 (\"ramp\")", "unknown key 'occ.radiu'"});
+  checkCaught(validate(R"([{"action": "ramp", "key": "occ.radius", "from": 0, "to": 3, "frames": 10}])"),
+              ExitCode::Usage, {"action 0 (\"ramp\")", "occ.radius"});
+  checkCaught(validate(R"([{"action": "ramp", "key": "camera.position", "from": 0, "to": 1, "frames": 2}])"),
+              ExitCode::Usage, {"action 0 (\"ramp\")", "needs a float or int key"});
+  // The ramp ends at its end value: a later "set" is checked against what the ramp left.
+  EXPECT_FALSE(validate(R"([{"action": "ramp", "key": "sh.samples", "from": 1, "to": 64, "frames": 3},
+                            {"action": "reset", "key": "sh.samples"}])")
+                   .thrown);
+}
+
+TEST(ViewerScript, RecordNeedsAWritableDirectoryAndStopARecording) {
+  const auto dir = rtlab::test::freshTestDir("viewer_script");
+  const std::string ok = dir.string(), missing = (dir / "missing").string();
+  EXPECT_FALSE(validate(R"([{"action": "record", "dir": ")" + ok + R"("}, {"action": "stop"}])").thrown);
+  EXPECT_FALSE(validate(R"([{"action": "record", "dir": ")" + ok + R"("}])").thrown) << "ends with the window";
+  checkCaught(validate(R"([{"action": "record", "dir": ")" + missing + R"("}])"), ExitCode::Output,
+              {"action 0 (\"record\")", "missing", "does not exist"});
+  checkCaught(validate(R"([{"action": "stop"}])"), ExitCode::Usage, {"action 0 (\"stop\")", "no recording"});
+  checkCaught(validate(R"([{"action": "record", "dir": ")" + ok + R"("}, {"action": "record", "dir": ")" + ok +
+                       R"("}])"),
+              ExitCode::Usage, {"action 1 (\"record\")", "already running"});
+  EXPECT_EQ(recordedFramePath("out", 12), (std::filesystem::path("out") / "frame_00012.png").string());
+  EXPECT_TRUE(rtlab::test::dirEntries(dir).empty()) << "validation wrote a file";
 }

@@ -28,7 +28,7 @@ void FrameDisplay::draw(const DisplayRequest& r) {
       .set("uMin", r.min)
       .set("uMax", r.max)
       .set("uFalseColor", r.falseColor)
-      .set("uMode", r.b.texture ? int(r.mode) : 0)
+      .set("uMode", r.mode == DisplayRequest::Ramp || r.b.texture ? int(r.mode) : 0)
       .set("uDivider", r.divider)
       .set("uDividerPx", 1.0f / float(std::max(r.width, 1)));
   m_common.drawFullscreen();

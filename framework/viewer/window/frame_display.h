@@ -20,7 +20,9 @@ struct DisplaySide {
 
 struct DisplayRequest {
   DisplaySide a, b; // b only for the wipe and the difference
-  enum Mode { Single = 0, Wipe = 1, Difference = 2 } mode = Single;
+  // Ramp: the colour scale itself, from the range's min (left) to its max (right), in gray or
+  // false color: the bar that labels a data view (`a` is bound, not read).
+  enum Mode { Single = 0, Wipe = 1, Difference = 2, Ramp = 3 } mode = Single;
   float min = 0.0f, max = 1.0f; // data range (and the difference's full scale: max - min)
   bool falseColor = false;
   float divider = 0.5f;

@@ -51,6 +51,20 @@ nlohmann::ordered_json viewerReport(const ViewerState& state, int renderWidth, i
   j["shader_errors"] = state.shaderErrors;
   j["lecture"] = state.lecture;
   j["bookmark"] = state.bookmark;
+  auto rect = [](const PixelRect& r) { return nlohmann::ordered_json::array({r.x, r.y, r.width, r.height}); };
+  j["layout"] = {{"panel_shown", state.showPanel},
+                 {"panel", rect(state.layout.panel)},
+                 {"frame", rect(state.layout.frame)},
+                 {"open_sections", state.openSections},
+                 {"color_bar", state.colorBar.shown ? rect(state.layout.colorBar) : nlohmann::ordered_json(nullptr)}};
+  if (state.colorBar.shown)
+    j["color_bar"] = {{"label", state.colorBar.label},
+                      {"min", state.colorBar.min},
+                      {"max", state.colorBar.max},
+                      {"false_color", state.colorBar.falseColor}};
+  else
+    j["color_bar"] = nullptr;
+  j["recorded_frames"] = state.recordedFrames;
   j["params"] = state.params.toJson();
   return j;
 }

@@ -4,6 +4,8 @@
 #include "viewer/json_fields.h"
 #include "viewer/viewer_actions.h"
 
+#include <cmath>
+
 namespace rtlab {
 
 void ScriptRunner::step(ViewerState& state) {
@@ -18,6 +20,7 @@ void ScriptRunner::step(ViewerState& state) {
               std::to_string(m_samples) + " spp; continuing");
     m_waitingSamples = false;
   }
+  if (m_ramp && !rampStep(state)) return;
   while (m_next < m_actions.size()) {
     const ScriptAction& a = m_actions[m_next++];
     logDebug("script: " + a.where());
@@ -29,6 +32,19 @@ void ScriptRunner::flushReports() {
   for (const auto& file : m_pendingReports)
     m_report(file);
   m_pendingReports.clear();
+}
+
+bool ScriptRunner::rampStep(ViewerState& state) {
+  Ramp& r = *m_ramp;
+  ++r.step;
+  const double value = rampValue(r.from, r.to, r.step, r.frames);
+  if (state.params.spec(r.key).type == ParamType::Int)
+    setParamAction(state, r.key, static_cast<long long>(std::llround(value)));
+  else
+    setParamAction(state, r.key, value);
+  if (r.step < r.frames) return false;
+  m_ramp.reset();
+  return true;
 }
 
 bool ScriptRunner::run(const ScriptAction& a, ViewerState& state) {
@@ -79,6 +95,19 @@ bool ScriptRunner::run(const ScriptAction& a, ViewerState& state) {
     state.lecture = j.at("on").get<bool>();
   else if (a.action == "bookmark")
     bookmarkAction(state, int(j.at("index").get<long long>()));
+  else if (a.action == "panel")
+    panelAction(state, j.at("on").get<bool>());
+  else if (a.action == "section")
+    sectionAction(state, j.at("name"), optionalBool(j, "open", w).value_or(true));
+  else if (a.action == "ramp") {
+    m_ramp = Ramp{j.at("key"), j.at("from").get<double>(), j.at("to").get<double>(),
+                  long(j.at("frames").get<long long>()), 0};
+    return rampStep(state); // the first step shows in this frame
+  } else if (a.action == "record") {
+    state.recordDir = j.at("dir");
+    state.recordedFrames = 0;
+  } else if (a.action == "stop")
+    state.recordDir.clear();
   else if (a.action == "quit") {
     state.quit = true;
     return false;

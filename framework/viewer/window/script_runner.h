@@ -1,6 +1,6 @@
 // Runs a validated `--script` (viewer/script.h) inside the viewer's loop: step() is called once
 // per frame before rendering and runs actions until one has to wait ("wait" for frames,
-// "wait_samples" for the progressive reference); the window's own actions (screenshot,
+// "wait_samples" for the progressive reference, "ramp" for its frames); the window's own actions (screenshot,
 // snapshot, report) are queued on the state and happen after the frame they follow.
 #pragma once
 #include "viewer/script.h"
@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace rtlab {
@@ -21,7 +22,9 @@ public:
   // Runs actions until one waits or the script ends. Errors of an action propagate (the viewer
   // exits with their code; validation before the first frame makes them rare).
   void step(ViewerState& state);
-  bool finished() const { return m_next >= m_actions.size() && m_waitFrames == 0 && !m_waitingSamples; }
+  bool finished() const {
+    return m_next >= m_actions.size() && m_waitFrames == 0 && !m_waitingSamples && !m_ramp;
+  }
   // True while a "wait_samples" waits: the reference must run even with compare off.
   bool wantsReference() const { return m_waitingSamples; }
   // Reports to write after this frame's picture (the caller calls flushReports then).
@@ -29,6 +32,13 @@ public:
 
 private:
   bool run(const ScriptAction& action, ViewerState& state); // false: wait before the next action
+  bool rampStep(ViewerState& state);                        // false: the ramp goes on next frame
+  struct Ramp {
+    std::string key;
+    double from = 0, to = 0;
+    long frames = 1, step = 0;
+  };
+  std::optional<Ramp> m_ramp;
   std::vector<ScriptAction> m_actions;
   std::function<void(const std::string&)> m_report;
   std::vector<std::string> m_pendingReports;

@@ -95,7 +95,6 @@ int runViewer(ViewerOptions options) {
     script = std::make_unique<ScriptRunner>(std::move(*options.script), [&](const std::string& path) {
       writeViewerReport(path, state, frame.renderWidth(), frame.renderHeight());
     });
-  bool showPanel = true;
   auto last = std::chrono::steady_clock::now();
   while (!context->shouldClose() && !state.quit) {
     context->pollEvents();
@@ -117,15 +116,19 @@ int runViewer(ViewerOptions options) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    if (handleViewerInput(window, state, dt, showPanel).quit) break;
+    if (handleViewerInput(window, state, dt).quit) break;
     if (script) script->step(state);
 
+    const float pixelScale = ImGui::GetIO().DisplayFramebufferScale.x;
+    state.layout = computeViewerLayout(w, h, state.showPanel, state.panelWidthEm, ImGui::GetFontSize() * pixelScale);
     frame.render(state, w, h, script && script->wantsReference(), f.options.seed);
     state.shaderErrors = reloadErrors;
     if (!frame.shaderError().empty()) state.shaderErrors.push_back(frame.shaderError());
-    if (showPanel) drawViewerPanel(state);
-    drawInfoOverlay(state, frame.renderWidth(), frame.renderHeight());
-    drawLectureCaption(state);
+    // A frame that goes to a file shows no transient status ("screenshot a.png" of the last one).
+    const bool finalShot = !options.screenshot.empty() && state.frames >= f.options.frames;
+    const bool captured = !state.pendingScreenshots.empty() || !state.recordDir.empty() || finalShot;
+    drawViewerPanel(state, !captured, w);
+    drawFrameOverlays(state, frame.renderWidth(), frame.renderHeight());
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     state.glErrors += drainGlErrors();
@@ -133,15 +136,16 @@ int runViewer(ViewerOptions options) {
     for (const auto& path : state.pendingScreenshots) {
       try {
         writeScreenshot(path, w, h);
-        state.status = "screenshot " + path;
+        setStatus(state, "screenshot " + path, true);
       } catch (const Error& e) {
         if (script) throw; // a script's output that cannot be written is an error (exit 6)
-        state.status = e.what();
+        setStatus(state, e.what(), false);
       }
     }
     state.pendingScreenshots.clear();
+    if (!state.recordDir.empty()) writeScreenshot(recordedFramePath(state.recordDir, state.recordedFrames++), w, h);
     if (script) script->flushReports();
-    if (!options.screenshot.empty() && state.frames >= f.options.frames) {
+    if (finalShot) {
       writeScreenshot(options.screenshot, w, h);
       break;
     }

@@ -10,6 +10,11 @@
 #include <cmath>
 
 namespace rtlab {
+namespace {
+
+constexpr int kPipTopMarginPx = 80; // room for the info overlay's lines at the region's top
+
+} // namespace
 
 ViewerFrame::ViewerFrame(const TechniqueRegistry& registry, TimingMethod timing)
     : m_registry(registry), m_renderer(registry), m_timer(timing), m_display(m_renderer.programs()) {}
@@ -29,7 +34,7 @@ FrameOutputs ViewerFrame::outputsFor(ViewerState& state, bool reference, const s
       m_renderer.checkAov(state.view.aov);
       if (used) outputs.aovs.push_back(state.view.aov);
     } catch (const Error& e) {
-      state.status = std::string(e.what()) + ": debug view off";
+      setStatus(state, std::string(e.what()) + ": debug view off", false);
       state.view.mode = DebugMode::Off;
     }
   }
@@ -61,8 +66,9 @@ void ViewerFrame::render(ViewerState& state, int windowWidth, int windowHeight, 
     m_renderer.setTechniques(state.selection.ordered());
     state.techniquesChanged = false;
   }
-  const int width = std::max(1, int(std::lround(windowWidth * state.renderScale)));
-  const int height = std::max(1, int(std::lround(windowHeight * state.renderScale)));
+  const PixelRect& region = state.layout.frame;
+  const int width = std::max(1, int(std::lround(region.width * state.renderScale)));
+  const int height = std::max(1, int(std::lround(region.height * state.renderScale)));
   if (width != m_width || height != m_height) state.frameHistory.clear(); // the graph is per render size
   m_width = width;
   m_height = height;
@@ -105,7 +111,7 @@ void ViewerFrame::autoRange(ViewerState& state) {
   if (state.view.mode == DebugMode::Off) return;
   const ValueRange range = validRange(m_renderer.readAov(state.view.aov)); // background holds 0, not data
   if (!(range.min < range.max)) {
-    state.status = "auto range: the view holds a single value";
+    setStatus(state, "auto range: the view holds a single value", false);
     return;
   }
   state.view.min = range.min;
@@ -117,7 +123,7 @@ void ViewerFrame::takeSnapshot(ViewerState& state, const DisplaySide& side) {
   if (!side.texture) return;
   m_snapshot = copyTexture(*side.texture, "viewer.snapshot");
   m_snapshotSide = DisplaySide{&m_snapshot, side.kind, side.channels};
-  state.status = "snapshot taken";
+  setStatus(state, "snapshot taken", true);
 }
 
 void ViewerFrame::draw(ViewerState& state, int windowWidth, int windowHeight, const std::string& referenceAov) {
@@ -126,11 +132,17 @@ void ViewerFrame::draw(ViewerState& state, int windowWidth, int windowHeight, co
   glDisable(GL_SCISSOR_TEST);
   glClearColor(0, 0, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT);
+  state.colorBar.shown = false;
+  state.wipeLeft.clear();
+  state.wipeRight.clear();
   if (!m_rendered) return;
   const DebugViewSettings& v = state.view;
+  const PixelRect& region = state.layout.frame;
   DisplayRequest r;
-  r.width = windowWidth;
-  r.height = windowHeight;
+  r.x = region.x;
+  r.y = windowHeight - region.y - region.height; // GL's origin is the lower left
+  r.width = region.width;
+  r.height = region.height;
   r.min = v.min;
   r.max = v.max;
   r.falseColor = v.falseColor;
@@ -143,26 +155,65 @@ void ViewerFrame::draw(ViewerState& state, int windowWidth, int windowHeight, co
     r.a = aovSide(referenceAov);
     r.b = DisplaySide{m_reference.texture(), DisplayKind::Data, m_reference.texture() ? m_reference.channels() : 1};
     r.mode = state.compare.mode == CompareMode::Reference ? DisplayRequest::Wipe : DisplayRequest::Difference;
+    if (r.mode == DisplayRequest::Wipe) { // the AOV's name is on the colour bar
+      std::string techniques;
+      for (const auto& id : state.selection.ordered())
+        techniques += (techniques.empty() ? "" : ", ") + id;
+      state.wipeLeft = techniques.empty() ? std::string("no technique") : techniques;
+      state.wipeRight = "reference";
+    }
     break;
   case CompareMode::Snapshot:
     r.b = m_snapshotSide;
     r.mode = DisplayRequest::Wipe;
+    if (r.b.texture) {
+      state.wipeLeft = "live";
+      state.wipeRight = "snapshot";
+    }
     break;
   case CompareMode::Off:
     break;
   }
   m_display.draw(r);
+  DisplayRequest shown = r; // the picture whose values the colour bar explains
   if (v.mode == DebugMode::Pip && state.compare.mode == CompareMode::Off) {
     DisplayRequest pip = r;
     pip.a = aovSide(v.aov);
     pip.b = {};
     pip.mode = DisplayRequest::Single;
-    pip.width = windowWidth / 3;
-    pip.height = windowHeight / 3;
-    pip.x = windowWidth - pip.width - 8;
-    pip.y = 8;
+    pip.width = region.width / 3;
+    pip.height = region.height / 3;
+    // Top right, below the info overlay; the colour bar and the caption keep the bottom.
+    pip.x = region.x + region.width - pip.width - 8;
+    pip.y = std::max(r.y + r.height - pip.height - kPipTopMarginPx, r.y);
     m_display.draw(pip);
+    shown = pip;
   }
+  drawColorBar(state, shown, windowHeight);
+}
+
+void ViewerFrame::drawColorBar(ViewerState& state, const DisplayRequest& shown, int windowHeight) {
+  const bool difference = shown.mode == DisplayRequest::Difference && shown.b.texture;
+  const bool data = shown.a.kind == DisplayKind::Data || (shown.b.texture && shown.b.kind == DisplayKind::Data);
+  if (!difference && !data) return;
+  auto& bar = state.colorBar;
+  bar.shown = true;
+  // The difference heat map is always false color, from 0 to the range's width (display.frag).
+  bar.falseColor = difference || (shown.falseColor && shown.a.channels == 1);
+  bar.min = difference ? 0.0f : shown.min;
+  bar.max = difference ? shown.max - shown.min : shown.max;
+  bar.label = difference ? "|frame - reference|"
+                         : state.compare.mode == CompareMode::Reference ? referenceAovFor(state) : state.view.aov;
+  const PixelRect& rect = state.layout.colorBar;
+  DisplayRequest ramp;
+  ramp.a = shown.a; // bound but not sampled: the ramp mode reads only the coordinates
+  ramp.mode = DisplayRequest::Ramp;
+  ramp.falseColor = bar.falseColor;
+  ramp.x = rect.x;
+  ramp.y = windowHeight - rect.y - rect.height;
+  ramp.width = rect.width;
+  ramp.height = rect.height;
+  m_display.draw(ramp);
 }
 
 } // namespace rtlab

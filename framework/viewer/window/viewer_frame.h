@@ -18,8 +18,9 @@ public:
   static constexpr std::size_t kHistory = 120; // frames in the timings graph
 
   ViewerFrame(const TechniqueRegistry& registry, TimingMethod timing);
-  // `referenceWanted`: keep the progressive reference running even when compare mode is off
-  // (a script waiting for samples).
+  // Renders at the size of state.layout.frame times the render scale and draws the picture into
+  // that region of the window (the rest is cleared). `referenceWanted`: keep the progressive
+  // reference running even when compare mode is off (a script waiting for samples).
   void render(ViewerState& state, int windowWidth, int windowHeight, bool referenceWanted, unsigned seed);
   // The message of a program that failed to compile on first use (empty when the last frame
   // rendered); programs that compiled once are hot-reloaded instead (hot_reload.h).
@@ -34,6 +35,7 @@ private:
   void takeSnapshot(ViewerState& state, const DisplaySide& side);
   void autoRange(ViewerState& state);
   void draw(ViewerState& state, int windowWidth, int windowHeight, const std::string& referenceAov);
+  void drawColorBar(ViewerState& state, const DisplayRequest& shown, int windowHeight);
   DisplaySide aovSide(const std::string& aov);
 
   const TechniqueRegistry& m_registry;

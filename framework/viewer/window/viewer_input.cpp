@@ -20,7 +20,7 @@ bool keyPressed(int key) {
 
 void stepBookmark(ViewerState& state, int delta) {
   if (state.bookmarks.empty()) {
-    state.status = "no bookmarks (rtlab view --bookmarks FILE)";
+    setStatus(state, "no bookmarks (rtlab view --bookmarks FILE)", false);
     return;
   }
   const int n = int(state.bookmarks.size());
@@ -30,29 +30,31 @@ void stepBookmark(ViewerState& state, int delta) {
 
 } // namespace
 
-InputResult handleViewerInput(GLFWwindow* window, ViewerState& state, float dt, bool& showPanel) {
+InputResult handleViewerInput(GLFWwindow* window, ViewerState& state, float dt) {
   InputResult result;
   const ImGuiIO& io = ImGui::GetIO();
   if (!io.WantCaptureKeyboard) {
     if (keyPressed(GLFW_KEY_ESCAPE)) result.quit = true;
     if (keyPressed(GLFW_KEY_F12)) state.pendingScreenshots.push_back(state.screenshotPathInput);
-    if (keyPressed(GLFW_KEY_TAB)) showPanel = !showPanel;
+    if (keyPressed(GLFW_KEY_TAB)) panelAction(state, !state.showPanel);
     if (keyPressed(GLFW_KEY_L)) state.lecture = !state.lecture;
     if (keyPressed(GLFW_KEY_RIGHT)) stepBookmark(state, +1);
     if (keyPressed(GLFW_KEY_LEFT)) stepBookmark(state, -1);
     if (keyPressed(GLFW_KEY_R)) resetCameraAction(state);
     if (keyPressed(GLFW_KEY_F)) frameSceneAction(state);
   }
-  int w = 1, h = 1;
-  glfwGetWindowSize(window, &w, &h);
+  // The frame's region in window coordinates (the layout is in framebuffer pixels).
+  const float scale = std::max(io.DisplayFramebufferScale.x, 1e-3f);
+  const PixelRect& frame = state.layout.frame;
+  const float frameX = float(frame.x) / scale, frameW = std::max(float(frame.width) / scale, 1.0f);
   const bool ctrl = io.KeyCtrl;
   if (!io.WantCaptureMouse && ctrl && io.MouseDown[0] && state.compare.mode != CompareMode::Off) {
-    state.compare.divider = std::clamp(io.MousePos.x / float(std::max(w, 1)), 0.0f, 1.0f);
+    state.compare.divider = std::clamp((io.MousePos.x - frameX) / frameW, 0.0f, 1.0f);
     return result;
   }
   CameraInput in;
   in.dt = dt;
-  in.viewport = {std::max(w, 1), std::max(h, 1)};
+  in.viewport = {std::max(int(frameW), 1), std::max(int(float(frame.height) / scale), 1)};
   if (!io.WantCaptureMouse) {
     in.mouseDelta = {io.MouseDelta.x, io.MouseDelta.y};
     in.orbit = io.MouseDown[0];

@@ -13,6 +13,6 @@ struct InputResult {
 };
 
 // Call between ImGui::NewFrame() and rendering; `dt` in seconds.
-InputResult handleViewerInput(GLFWwindow* window, ViewerState& state, float dt, bool& showPanel);
+InputResult handleViewerInput(GLFWwindow* window, ViewerState& state, float dt);
 
 } // namespace rtlab

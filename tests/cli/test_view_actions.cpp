@@ -1,0 +1,131 @@
+// The lecturer's script actions (docs/viewer-scripts.md): "technique STAGE none" turns the stage
+// off as `-t none` and `rtlab list` spell it; "panel" hides and shows the side panel; "section"
+// opens a panel header; "ramp" moves a parameter over N frames and ends exactly at its end value;
+// "record" ... "stop" writes one PNG per frame drawn in between. Speaker notes of a bookmarks
+// file are exported as Markdown without a window, and the lecture files carry notes.
+#include "view_helpers.h"
+
+#include <gtest/gtest.h>
+
+namespace fs = std::filesystem;
+using namespace rtlab::test;
+
+TEST(ViewActions, NonePanelSectionRampAndRecord) {
+  ASSERT_TRUE(fs::exists(kXvfbRun)) << "install xvfb (scripts/setup.sh --test-deps)";
+  const fs::path dir = freshTestDir("view_actions");
+  auto file = [&](const char* name) { return (dir / name).string(); };
+  fs::create_directories(dir / "frames");
+  const nlohmann::json script = {
+      {{"action", "technique"}, {"stage", "shadow"}, {"id", "pcf"}},
+      {{"action", "wait"}, {"frames", 1}},
+      {{"action", "report"}, {"file", file("before.json")}},
+      {{"action", "technique"}, {"stage", "shadow"}, {"id", "none"}},
+      {{"action", "panel"}, {"on", false}},
+      {{"action", "wait"}, {"frames", 1}},
+      {{"action", "report"}, {"file", file("hidden.json")}},
+      {{"action", "panel"}, {"on", true}},
+      {{"action", "section"}, {"name", "Debug view"}},
+      {{"action", "section"}, {"name", "Timings"}, {"open", false}},
+      {{"action", "technique"}, {"stage", "shadow"}, {"id", "pcf"}},
+      {{"action", "ramp"}, {"key", "pcf.radius"}, {"from", 0}, {"to", 6}, {"frames", 4}},
+      {{"action", "report"}, {"file", file("ramped.json")}},
+      {{"action", "record"}, {"dir", file("frames")}},
+      {{"action", "wait"}, {"frames", 3}},
+      {{"action", "stop"}},
+      {{"action", "wait"}, {"frames", 2}},
+      {{"action", "quit"}}};
+  std::vector<std::string> args = kViewSize;
+  args.push_back("--script");
+  args.push_back(writeScript(dir / "script.json", script));
+  const auto r = runView(args);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto before = readJson(dir / "before.json"), hidden = readJson(dir / "hidden.json"),
+             ramped = readJson(dir / "ramped.json");
+  EXPECT_EQ(before["techniques"], nlohmann::json::array({"pcf"}));
+  EXPECT_TRUE(hidden["techniques"].empty()) << "technique shadow none should turn the shadow off";
+  EXPECT_EQ(hidden["layout"]["panel_shown"], false);
+  EXPECT_EQ(hidden["layout"]["panel"][2], 0);
+  EXPECT_EQ(ramped["layout"]["panel_shown"], true);
+  const auto& open = ramped["layout"]["open_sections"];
+  EXPECT_NE(std::find(open.begin(), open.end(), "Debug view"), open.end()) << open.dump();
+  EXPECT_EQ(std::find(open.begin(), open.end(), "Timings"), open.end()) << open.dump();
+  // The ramp takes its 4 frames (one value each) and ends at exactly 6.
+  EXPECT_EQ(ramped["params"]["pcf.radius"], 6.0);
+  EXPECT_GE(ramped["frames"].get<int>() - before["frames"].get<int>(), 4);
+  // "record" wrote the 3 frames drawn before "stop", as window-sized PNGs.
+  std::vector<std::string> written;
+  for (const auto& e : fs::directory_iterator(dir / "frames"))
+    written.push_back(e.path().filename().string());
+  std::sort(written.begin(), written.end());
+  EXPECT_EQ(written, (std::vector<std::string>{"frame_00000.png", "frame_00001.png", "frame_00002.png"}));
+  const rtlab::Image first = rtlab::readImage(file("frames/frame_00000.png"));
+  EXPECT_EQ(first.width, 320);
+  EXPECT_EQ(first.height, 180);
+}
+
+// Bad uses of the new actions fail before the window opens (here: without a display), as every
+// script error does: exit 3 for the file's shape, 2 for a value, 6 for an output directory.
+TEST(ViewActions, BadNewActionsFailBeforeTheWindowOpens) {
+  const fs::path dir = freshTestDir("view_actions");
+  auto run = [&](const char* name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return runProcess("/usr/bin/env", {"-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", RTLAB_BINARY, "view", "--script",
+                                       (dir / name).string()});
+  };
+  auto r = run("section.json", R"([{"action": "section", "name": "Nope"}])");
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("section.json"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("Debug view"), std::string::npos) << "the message lists the sections: " << r.err;
+  r = run("ramp_type.json", R"([{"action": "ramp", "key": "pcf.radius", "from": 0, "to": 4}])");
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  r = run("ramp_range.json", R"([{"action": "ramp", "key": "pcf.radius", "from": 0, "to": 99, "frames": 3}])");
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("pcf.radius"), std::string::npos) << r.err;
+  r = run("ramp_bool.json", R"([{"action": "ramp", "key": "ssao.blur", "from": 0, "to": 1, "frames": 3}])");
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  r = run("record.json", R"([{"action": "record", "dir": ")" + (dir / "missing").string() + R"("}])");
+  EXPECT_EQ(r.exitCode, 6) << r.err;
+  r = run("stop.json", R"([{"action": "stop"}])");
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  r = run("panel.json", R"([{"action": "panel", "on": "yes"}])");
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+}
+
+// --export-notes writes the lecture's speaker notes as Markdown and exits without a window: a
+// heading per bookmark, in order, with its notes. The shipped lecture files have notes on every
+// bookmark, and the shadow lecture's light-bleeding bookmarks (5 and 6) are on `stacked`.
+TEST(ViewActions, SpeakerNotesAreExportedAsMarkdown) {
+  const fs::path dir = freshTestDir("view_actions");
+  std::ofstream(dir / "talk.json") << R"({"schema": 1, "bookmarks": [
+    {"name": "Hard", "techniques": ["shadow_map"], "notes": "Say: one depth test."},
+    {"name": "Soft", "techniques": ["pcss"]}]})";
+  auto exportNotes = [&](const std::string& bookmarks, const std::string& out) {
+    return runProcess("/usr/bin/env", {"-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", RTLAB_BINARY, "view", "--bookmarks",
+                                       bookmarks, "--export-notes", out});
+  };
+  auto r = exportNotes((dir / "talk.json").string(), (dir / "notes.md").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::ifstream in(dir / "notes.md");
+  const std::string md((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto hard = md.find("## 1. Hard"), soft = md.find("## 2. Soft");
+  ASSERT_NE(hard, std::string::npos) << md;
+  ASSERT_NE(soft, std::string::npos) << md;
+  EXPECT_LT(hard, soft);
+  EXPECT_NE(md.find("Say: one depth test."), std::string::npos) << md;
+  EXPECT_NE(md.find("(no notes)", soft), std::string::npos) << md;
+  r = exportNotes((dir / "talk.json").string(), (dir / "missing" / "notes.md").string());
+  EXPECT_EQ(r.exitCode, 6) << r.err;
+
+  for (const char* lecture : {"shadow-family.json", "ao.json"}) {
+    const fs::path source = fs::path(RTLAB_SOURCE_DIR) / "docs" / "lecture" / lecture;
+    const fs::path out = dir / (std::string(lecture) + ".md");
+    r = exportNotes(source.string(), out.string());
+    ASSERT_EQ(r.exitCode, 0) << lecture << ": " << r.err;
+    std::ifstream notes(out);
+    const std::string text((std::istreambuf_iterator<char>(notes)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(text.find("(no notes)"), std::string::npos) << lecture << " has a bookmark without notes";
+  }
+  const auto family = readJson(fs::path(RTLAB_SOURCE_DIR) / "docs" / "lecture" / "shadow-family.json");
+  EXPECT_EQ(family["bookmarks"][4]["scene"], "stacked");
+  EXPECT_EQ(family["bookmarks"][5]["scene"], "stacked");
+}
