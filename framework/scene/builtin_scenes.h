@@ -23,7 +23,7 @@ private:
   Scene m_scene;
 };
 
-// The built-in scenes' spheres: a UV sphere of kSphereSlices x kSphereStacks (docs/measuring.md,
+// The built-in scenes' spheres: a fine UV sphere (builtin.cpp; docs/measuring.md,
 // "The shading point": fine enough that the terminator rule leaves no measurable facet error).
 Mesh builtinSphere(const std::string& name, float radius);
 
