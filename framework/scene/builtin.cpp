@@ -2,7 +2,6 @@
 #include "scene/builtin.h"
 
 #include "scene/builtin_scenes.h"
-#include "scene/mesh_builder.h"
 #include "util/error.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -66,11 +65,6 @@ Scene SceneBuilder::finish(const Camera& cam) {
   m_scene.hasFileLights = true;
   fitClipPlanes(m_scene.camera, m_scene.worldBounds());
   return std::move(m_scene);
-}
-
-Mesh builtinSphere(const std::string& name, float radius) {
-  constexpr int kSphereSlices = 96, kSphereStacks = 48;
-  return makeSphere(name, radius, kSphereSlices, kSphereStacks);
 }
 
 Material diffuseMaterial(const std::string& name, const glm::vec3& color, float roughness) {

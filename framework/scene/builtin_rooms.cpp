@@ -82,7 +82,7 @@ Scene makeAreaLight() {
   const int boxMat = b.addMaterial(diffuseMaterial("box", {0.7f, 0.7f, 0.75f}, 0.35f));
 
   b.addObject(makePlane("floor", 10.0f, 10.0f, 4), floorMat);
-  b.addObject(builtinSphere("sphere", 0.6f), sphereMat, placed({-1.3f, 0.6f, 0.2f}));
+  b.addObject(makeSphere("sphere", 0.6f), sphereMat, placed({-1.3f, 0.6f, 0.2f}));
   b.addObject(makeBox("box", glm::vec3(0.9f)), boxMat, placed({1.4f, 0.45f, -0.3f}, 30.0f));
 
   // Light 0: E = 100 * cos(31 deg) / 71 ~ 1.2 at the aim point.

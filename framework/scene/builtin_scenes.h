@@ -23,10 +23,6 @@ private:
   Scene m_scene;
 };
 
-// The built-in scenes' spheres: a fine UV sphere (builtin.cpp; docs/measuring.md,
-// "The shading point": fine enough that the terminator rule leaves no measurable facet error).
-Mesh builtinSphere(const std::string& name, float radius);
-
 Material diffuseMaterial(const std::string& name, const glm::vec3& color, float roughness = 0.8f);
 // Translation followed by a rotation of `yawDegrees` about +y.
 glm::mat4 placed(const glm::vec3& position, float yawDegrees = 0.0f);

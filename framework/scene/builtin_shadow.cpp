@@ -22,7 +22,7 @@ Scene makeContact() {
 
   b.addObject(makePlane("ground", 12.0f, 12.0f, 8), ground);
   b.addObject(makeBox("box", glm::vec3(1.0f)), boxMat, placed({-1.2f, 0.5f, 0.8f}, 25.0f));
-  b.addObject(builtinSphere("sphere", 0.6f), sphereMat, placed({0.9f, 0.6f, 1.3f}));
+  b.addObject(makeSphere("sphere", 0.6f), sphereMat, placed({0.9f, 0.6f, 1.3f}));
   // Thin (0.08) wall on the left, running along z; its shadow falls to its left (-x).
   b.addObject(makeBox("wall", {0.08f, 1.5f, 2.5f}), wallMat, placed({-3.0f, 0.75f, -0.75f}));
   // Floating box: 0.8 wide, bottom at y = 1.2.
@@ -50,7 +50,7 @@ Scene makeStacked() {
   b.addObject(makePlane("ground", 12.0f, 12.0f, 8), ground);
   b.addObject(makeBox("plate_low", {1.4f, 0.05f, 1.4f}), lowMat, placed({-0.4f, 0.8f, 0.3f}));
   b.addObject(makeBox("plate_high", {2.0f, 0.05f, 1.6f}), highMat, placed({0.5f, 2.2f, -0.4f}));
-  b.addObject(builtinSphere("sphere", 0.45f), sphereMat, placed({1.6f, 0.45f, -0.2f}));
+  b.addObject(makeSphere("sphere", 0.45f), sphereMat, placed({1.6f, 0.45f, -0.2f}));
 
   // Light 0: the light travels down and slightly towards +x, +z; E = 3 * cos(14 deg) ~ 2.9.
   b.addLight(directionalLight("key", {0.2f, -1.0f, 0.15f}, 3.0f, 1.5f));
