@@ -91,7 +91,8 @@ void Renderer::render(const ParamSet& params, int width, int height, const Frame
   for (const auto& aov : outputs.aovs) targets.push_back(isBuiltinAov(aov) ? addAovPass(graph, aov) : aovResource(aov));
   if (outputs.displayColor) targets.push_back(res::kColorLdr);
   if (outputs.surfaces)
-    for (const auto* r : {&res::kPosition, &res::kGeometry, &res::kNormal}) targets.push_back(*r);
+    for (const auto* r : {&res::kPosition, &res::kGeometry, &res::kNormal, &res::kShadowPosition, &res::kShadowNormal})
+      targets.push_back(*r);
   graph.compile(targets);
   timer.beginFrame();
   graph.run(timer);
@@ -117,8 +118,11 @@ SurfaceData Renderer::readSurfaces() const {
   const gl::Texture* pos = pool.find(res::kPosition);
   const gl::Texture* geo = pool.find(res::kGeometry);
   const gl::Texture* nrm = pool.find(res::kNormal);
-  if (!pos || !geo || !nrm) throw Error(ExitCode::Internal, "surfaces were not kept (FrameOutputs::surfaces)");
+  const gl::Texture* shadowPos = pool.find(res::kShadowPosition);
+  const gl::Texture* shadowNrm = pool.find(res::kShadowNormal);
+  if (!pos || !geo || !nrm || !shadowPos || !shadowNrm) throw Error(ExitCode::Internal, "surfaces were not kept (FrameOutputs::surfaces)");
   const Image p = readTexture(*pos, 3, false), g = readTexture(*geo, 3, true), n = readTexture(*nrm, 3, false);
+  const Image sp = readTexture(*shadowPos, 3, false), sn = readTexture(*shadowNrm, 3, false);
   SurfaceData s;
   s.width = p.width;
   s.height = p.height;
@@ -126,6 +130,8 @@ SurfaceData Renderer::readSurfaces() const {
   s.position.resize(count);
   s.geometricNormal.resize(count);
   s.shadingNormal.resize(count);
+  s.shadingPoint.resize(count);
+  s.smoothNormal.resize(count);
   s.valid.resize(count);
   auto unit = [](glm::vec3 v) { return glm::dot(v, v) > 0.0f ? glm::normalize(v) : glm::vec3(0.0f); };
   for (std::size_t i = 0; i < count; ++i) {
@@ -133,6 +139,8 @@ SurfaceData Renderer::readSurfaces() const {
     s.position[i] = glm::vec3(p.pixels[i * 3], p.pixels[i * 3 + 1], p.pixels[i * 3 + 2]);
     s.geometricNormal[i] = unit(glm::vec3(g.pixels[i * 3], g.pixels[i * 3 + 1], g.pixels[i * 3 + 2]));
     s.shadingNormal[i] = unit(glm::vec3(n.pixels[i * 3], n.pixels[i * 3 + 1], n.pixels[i * 3 + 2]));
+    s.shadingPoint[i] = glm::vec3(sp.pixels[i * 3], sp.pixels[i * 3 + 1], sp.pixels[i * 3 + 2]);
+    s.smoothNormal[i] = unit(glm::vec3(sn.pixels[i * 3], sn.pixels[i * 3 + 1], sn.pixels[i * 3 + 2]));
   }
   return s;
 }

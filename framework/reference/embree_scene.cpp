@@ -1,5 +1,6 @@
 #include "reference/embree_scene.h"
 
+#include "reference/terminator.h"
 #include "reference/texture_sample.h"
 #include "util/error.h"
 
@@ -247,6 +248,11 @@ void EmbreeScene::describeHit(unsigned geomID, unsigned primID, float u, float v
   if (!frontFacing) ns = -ns;
   if (glm::dot(ns, ng) < 0.0f) ns = safeNormalize(ns - 1.01f * glm::dot(ns, ng) * ng, ng);
   hit.shadingNormal = ns;
+  // The vertex normals on the side the hit is seen from, as the G-buffer does (gbuffer.frag).
+  const glm::vec3 corners[3] = {p0, p1, p2};
+  const float side = frontFacing ? 1.0f : -1.0f;
+  const glm::vec3 normals[3] = {side * g.normals[tri[0]], side * g.normals[tri[1]], side * g.normals[tri[2]]};
+  hit.shadingPoint = terminatorPoint(hit.position, glm::vec3(w, u, v), corners, normals);
   hit.uv = w * g.uvs[tri[0]] + u * g.uvs[tri[1]] + v * g.uvs[tri[2]];
   hit.material = g.material;
 }

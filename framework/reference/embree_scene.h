@@ -21,6 +21,7 @@ struct RayHit {
   glm::vec3 position{0.0f};        // interpolated from the triangle's world vertices
   glm::vec3 geometricNormal{0.0f}; // unit, facing the ray's origin
   glm::vec3 shadingNormal{0.0f};   // unit, interpolated vertex normal, in geometricNormal's hemisphere
+  glm::vec3 shadingPoint{0.0f};    // the shadow terminator rule's point (reference/terminator.h)
   glm::vec2 uv{0.0f};
   const Material* material = nullptr; // null: the default material
 };

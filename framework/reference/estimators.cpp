@@ -12,13 +12,13 @@ namespace {
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 // A shadow ray from `start` toward a point of `light` chosen by u, added to `packet` unless the
-// answer is known without tracing: Hidden when the light point is below the tangent plane of ng
-// (the surface itself hides it), Visible when it is closer than any surface can be.
+// answer is known without tracing: Hidden when the light point is below the tangent plane of
+// `horizon` (the surface itself hides it), Visible when it is closer than any surface can be.
 enum class Shadow { Hidden, Visible, Traced };
-Shadow addShadowRay(EmbreeScene::Packet& packet, const Light& light, const RayStart& start, const glm::vec3& ng,
-                    glm::vec2 u) {
+Shadow addShadowRay(EmbreeScene::Packet& packet, const Light& light, const RayStart& start,
+                    const glm::vec3& horizon, glm::vec2 u) {
   const ShadowRay ray = shadowRayToLight(light, start.origin, u);
-  if (!(glm::dot(ray.direction, ng) > 0.0f)) return Shadow::Hidden;
+  if (!(glm::dot(ray.direction, horizon) > 0.0f)) return Shadow::Hidden;
   if (!(ray.tfar > start.tnear)) return Shadow::Visible;
   packet.add(start.origin, ray.direction, start.tnear, ray.tfar);
   return Shadow::Traced;
@@ -35,7 +35,7 @@ void addReflected(const EstimatorContext& ctx, const RayHit* hits, const glm::ve
     if (!(hitMask >> k & 1u)) continue;
     albedo[k] = surfaceInputs(ctx.scene, hits[k].material, hits[k].uv).diffuseAlbedo();
     if (!(albedo[k].x > 0.0f || albedo[k].y > 0.0f || albedo[k].z > 0.0f)) hitMask &= ~(1u << k);
-    else starts[k] = rayStart(hits[k].position, hits[k].geometricNormal, -incoming[k]);
+    else starts[k] = rayStart(hits[k].shadingPoint, hits[k].geometricNormal, -incoming[k]);
   }
   for (std::size_t i = 0; i < ctx.lights.size() && hitMask != 0; ++i) {
     const Light& light = ctx.lights[i];
@@ -49,7 +49,7 @@ void addReflected(const EstimatorContext& ctx, const RayHit* hits, const glm::ve
       if (!(cosine > 0.0f) || !(irradiance.x > 0.0f || irradiance.y > 0.0f || irradiance.z > 0.0f)) continue;
       const glm::vec3 c = albedo[k] * irradiance * cosine;
       const int before = packet.count;
-      const Shadow shadow = addShadowRay(packet, light, starts[k], hits[k].geometricNormal,
+      const Shadow shadow = addShadowRay(packet, light, starts[k], hits[k].shadingNormal,
                                          sampler.get(samples[k], 1 + int(i)));
       if (shadow == Shadow::Visible) sum += c;
       if (shadow == Shadow::Traced) contribution[before] = c;
@@ -68,7 +68,7 @@ float estimateVisibility(const EstimatorContext& ctx, const SurfacePoint& x, con
                          std::uint64_t& rays) {
   if (ctx.lights.empty()) return 0.0f;
   const Light& light = ctx.lights.front();
-  const RayStart start = rayStart(x.position, x.geometricNormal, x.toViewer);
+  const RayStart start = rayStart(x.shadingPoint, x.geometricNormal, x.toViewer);
   const int n = lightHasExtent(light) ? sampler.spp() : 1;
   int visible = 0;
   EmbreeScene::Packet packet;
@@ -78,7 +78,7 @@ float estimateVisibility(const EstimatorContext& ctx, const SurfacePoint& x, con
     packet.count = 0;
   };
   for (int s = 0; s < n; ++s) {
-    if (addShadowRay(packet, light, start, x.geometricNormal, sampler.get(s, 0)) == Shadow::Visible) ++visible;
+    if (addShadowRay(packet, light, start, x.smoothNormal, sampler.get(s, 0)) == Shadow::Visible) ++visible;
     if (packet.count == 8) flush();
   }
   if (packet.count > 0) flush();
@@ -87,7 +87,7 @@ float estimateVisibility(const EstimatorContext& ctx, const SurfacePoint& x, con
 
 float estimateAo(const EstimatorContext& ctx, const SurfacePoint& x, const PixelSampler& sampler,
                  std::uint64_t& rays) {
-  const RayStart start = rayStart(x.position, x.geometricNormal, x.toViewer);
+  const RayStart start = rayStart(x.shadingPoint, x.geometricNormal, x.toViewer);
   const Frame frame(x.shadingNormal);
   int open = 0;
   EmbreeScene::Packet packet;
@@ -98,7 +98,7 @@ float estimateAo(const EstimatorContext& ctx, const SurfacePoint& x, const Pixel
   };
   for (int s = 0; s < sampler.spp(); ++s) {
     const glm::vec3 w = frame.toWorld(squareToCosineHemisphere(sampler.get(s, 0)));
-    if (!(glm::dot(w, x.geometricNormal) > 0.0f)) continue;
+    if (!(glm::dot(w, x.smoothNormal) > 0.0f)) continue;
     packet.add(start.origin, w, start.tnear, ctx.aoRadius);
     if (packet.count == 8) flush();
   }
@@ -108,7 +108,7 @@ float estimateAo(const EstimatorContext& ctx, const SurfacePoint& x, const Pixel
 
 glm::vec3 estimateIndirect(const EstimatorContext& ctx, const SurfacePoint& x, const PixelSampler& sampler,
                            std::uint64_t& rays) {
-  const RayStart start = rayStart(x.position, x.geometricNormal, x.toViewer);
+  const RayStart start = rayStart(x.shadingPoint, x.geometricNormal, x.toViewer);
   const Frame frame(x.shadingNormal);
   glm::vec3 sum(0.0f);
   EmbreeScene::Packet packet;
@@ -124,7 +124,7 @@ glm::vec3 estimateIndirect(const EstimatorContext& ctx, const SurfacePoint& x, c
   };
   for (int s = 0; s < sampler.spp(); ++s) {
     const glm::vec3 w = frame.toWorld(squareToCosineHemisphere(sampler.get(s, 0)));
-    if (!(glm::dot(w, x.geometricNormal) > 0.0f)) continue;
+    if (!(glm::dot(w, x.smoothNormal) > 0.0f)) continue;
     samples[packet.count] = s;
     packet.add(start.origin, w, start.tnear, kInfinity);
     if (packet.count == 8) flush();

@@ -38,7 +38,12 @@ bool surfacePoint(const SurfaceData& s, std::size_t i, const glm::vec3& eye, Sur
   const float d2 = glm::dot(d, d);
   glm::vec3 toViewer = d2 > 0.0f && std::isfinite(d2) ? d / std::sqrt(d2) : ng;
   if (!(glm::dot(toViewer, ng) >= 0.0f)) toViewer = ng; // not seen from the eye: normal offset only
-  x = {s.position[i], ng, ns, toViewer};
+  // The shadow terminator rule's point and normal; without them, the flat surface's.
+  glm::vec3 shadingPoint = s.position[i], nv = ng;
+  if (!s.shadingPoint.empty() && finite(s.shadingPoint[i])) shadingPoint = s.shadingPoint[i];
+  if (!s.smoothNormal.empty() && usable(s.smoothNormal[i])) nv = glm::normalize(s.smoothNormal[i]);
+  if (glm::dot(nv, ng) < 0.0f) nv = glm::normalize(nv - 1.01f * glm::dot(nv, ng) * ng);
+  x = {s.position[i], ng, ns, toViewer, shadingPoint, nv};
   return true;
 }
 
@@ -100,7 +105,8 @@ void checkReferenceJob(Quantity quantity, int spp, const std::string& sppName, f
     usageError("the visibility reference needs a light 0; the scene has no light");
   const std::size_t n = s.pixelCount();
   if (s.width < 0 || s.height < 0 || s.position.size() != n || s.geometricNormal.size() != n ||
-      s.shadingNormal.size() != n || s.valid.size() != n)
+      s.shadingNormal.size() != n || s.valid.size() != n || (!s.shadingPoint.empty() && s.shadingPoint.size() != n) ||
+      (!s.smoothNormal.empty() && s.smoothNormal.size() != n))
     throw Error(ExitCode::Internal, "reference: surface data of inconsistent size");
 }
 

@@ -14,6 +14,13 @@ struct SurfaceData {
   std::vector<glm::vec3> position;        // world
   std::vector<glm::vec3> geometricNormal; // world, unit, facing the camera
   std::vector<glm::vec3> shadingNormal;   // world, unit, in the geometric normal's hemisphere
+  // The shadow terminator rule (docs/measuring.md, "The shading point"): where the reference's rays
+  // start (the point lifted onto the smooth surface the vertex normals describe) and the normal
+  // whose tangent plane is the horizon there (the interpolated vertex normal, in the geometric
+  // normal's hemisphere). Both empty, or one per pixel; empty: the position and the geometric
+  // normal (a flat surface).
+  std::vector<glm::vec3> shadingPoint;
+  std::vector<glm::vec3> smoothNormal;
   std::vector<std::uint8_t> valid;        // 1 on surface pixels, 0 on background
   std::size_t pixelCount() const { return std::size_t(width) * height; }
 };

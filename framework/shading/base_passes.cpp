@@ -31,15 +31,19 @@ void addGBufferPass(FrameGraph& frame) {
         b.write(res::kGeometry, frameTexture(frame, GL_RGBA16F));
         b.write(res::kAlbedo, frameTexture(frame, GL_RGBA8));
         b.write(res::kMaterial, frameTexture(frame, GL_RGBA16F));
+        b.write(res::kShadowPosition, frameTexture(frame, GL_RGBA32F));
+        b.write(res::kShadowNormal, frameTexture(frame, GL_RGBA16F));
         b.write(res::kDepth, frameTexture(frame, GL_DEPTH_COMPONENT32F));
       },
       [](PassContext& ctx) {
         const gl::Framebuffer& fbo = ctx.framebuffer("gbuffer",
-            {res::kPosition, res::kNormal, res::kGeometry, res::kAlbedo, res::kMaterial}, res::kDepth);
+            {res::kPosition, res::kNormal, res::kGeometry, res::kAlbedo, res::kMaterial, res::kShadowPosition,
+             res::kShadowNormal},
+            res::kDepth);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, ctx.view.width, ctx.view.height);
         const float zero[4] = {0, 0, 0, 0};
-        for (int i = 0; i < 5; ++i) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, i, zero);
+        for (int i = 0; i < 7; ++i) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, i, zero);
         const float one = 1.0f;
         glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
         glEnable(GL_DEPTH_TEST);
@@ -47,7 +51,7 @@ void addGBufferPass(FrameGraph& frame) {
         glDepthMask(GL_TRUE);
         glDisable(GL_CULL_FACE);
         glDisable(GL_BLEND);
-        gl::Program& p = ctx.programs.get({{"shading/surface.vert", "shading/gbuffer.frag"}, {}, "gbuffer"});
+        gl::Program& p = ctx.programs.get({{"shading/surface.vert", "shading/surface.geom", "shading/gbuffer.frag"}, {}, "gbuffer"});
         p.set("uViewProj", ctx.view.viewProj)
             .set("uCameraPosition", ctx.view.cameraPosition)
             .set("uCameraForward", ctx.view.cameraForward);

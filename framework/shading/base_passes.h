@@ -19,6 +19,9 @@ inline const std::string kNormal = "gbuffer.normal";     // xyz shading normal, 
 inline const std::string kGeometry = "gbuffer.geometry"; // xyz geometric normal, w coverage
 inline const std::string kAlbedo = "gbuffer.albedo";     // rgb base color, a metallic
 inline const std::string kMaterial = "gbuffer.material"; // rgb emissive, a roughness
+// The shadow terminator rule (docs/measuring.md, "The shading point"): where shadow tests start.
+inline const std::string kShadowPosition = "gbuffer.shadow_position"; // xyz shading point, w coverage
+inline const std::string kShadowNormal = "gbuffer.shadow_normal";     // xyz smooth normal, w coverage
 inline const std::string kDepth = "gbuffer.depth";
 inline const std::string kColorHdr = "color.hdr";
 inline const std::string kColorLdr = "color.ldr";       // tone-mapped, linear (sRGB applied on output)

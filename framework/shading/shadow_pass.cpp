@@ -22,16 +22,16 @@ void addShadowScreenPass(FrameGraph& frame, const ShadowScreenPass& pass) {
       [&](PassBuilder& b) {
         if (pass.depthMap) b.read(kShadowDepth);
         for (const auto& r : pass.reads) b.read(r);
-        b.read(res::kPosition);
-        b.read(res::kGeometry);
+        b.read(res::kShadowPosition);
+        b.read(res::kShadowNormal);
         b.write(pass.output, frameTexture(frame, pass.format));
       },
       [pass, defines](PassContext& ctx) {
         gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", pass.fragment}, defines, pass.name});
         ctx.beginFullscreen(pass.name, {pass.output});
         p.use();
-        ctx.texture(res::kPosition).bind(0);
-        ctx.texture(res::kGeometry).bind(1);
+        ctx.texture(res::kShadowPosition).bind(0);
+        ctx.texture(res::kShadowNormal).bind(1);
         p.set("uPosition", 0).set("uGeometry", 1);
         bindShadowSpace(ctx, p, pass.depthMap ? 2 : -1);
         if (pass.bind) pass.bind(ctx, p);

@@ -20,8 +20,10 @@ class FrameGraph;
 struct PassContext;
 
 // A full-screen pass of a shadow technique over the G-buffer: fullscreen.vert + `fragment` with
-// the light's SHADOW_PROJECTION define plus `defines`; G-buffer position/geometry bound as
-// uPosition/uGeometry (units 0, 1); the shadow-space uniforms of shaders/common/shadow_space.glsl
+// the light's SHADOW_PROJECTION define plus `defines`; the G-buffer's shading point and smooth
+// normal of the shadow terminator rule (gbuffer.shadow_position/shadow_normal, docs/measuring.md
+// "The shading point") bound as uPosition/uGeometry (units 0, 1; xyz point and normal, w
+// coverage); the shadow-space uniforms of shaders/common/shadow_space.glsl
 // set, and with `depthMap` the stage's map bound as uShadowMap (unit 2). `bind` sets the
 // technique's own uniforms and textures (units 3 and up).
 struct ShadowScreenPass {
