@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace rtlab {
 namespace {
@@ -12,7 +14,9 @@ namespace {
 double roundUpTwoDigits(double v) {
   if (!(v > 0)) return v;
   const double magnitude = std::pow(10.0, std::floor(std::log10(v)) - 1);
-  return std::ceil(v / magnitude * (1 - 1e-12)) * magnitude;
+  char text[32]; // through text, so that 0.57 is 0.57 and not 0.5700000000000001
+  std::snprintf(text, sizeof text, "%.2g", std::ceil(v / magnitude * (1 - 1e-12)) * magnitude);
+  return std::strtod(text, nullptr);
 }
 
 } // namespace

@@ -238,9 +238,11 @@ std::string heatScaleHtml(const SweepPlan& plan, const SweepReportInfo& info) {
          "\"><span>&ge; " + html::escape(formatMetric(info.heatScale)) + "</span></div>\n<p class=\"meta\">Heat maps: |" +
          html::escape(plan.aov) + " &minus; reference| per pixel (mean over channels) through the magma colormap, on one "
          "scale for every point: 0 (black) to " + html::escape(formatMetric(info.heatScale)) +
-         ", the 99th percentile of the nonzero per-pixel errors over all points, rounded up; larger errors (up to " +
-         html::escape(formatMetric(info.heatMax)) + " here) are drawn saturated (light yellow). Gray: background, not "
-         "measured. Click a heat map for its full-size image.</p>\n";
+         ", the 99th percentile of the nonzero per-pixel errors over all points, rounded up to two digits; " +
+         (info.heatMax > info.heatScale ? "larger errors (up to " + html::escape(formatMetric(info.heatMax)) +
+                                              " here) are drawn saturated (light yellow)"
+                                        : "no error is larger (the largest: " + html::escape(formatMetric(info.heatMax)) + ")") +
+         ". Gray: background, not measured. Click a heat map for its full-size image.</p>\n";
 }
 
 std::string sweepReportHtml(const SweepPlan& plan, const std::vector<SweepResult>& results,
