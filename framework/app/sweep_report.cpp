@@ -131,7 +131,12 @@ std::string sweepChartSvg(const SweepPlan& plan, const std::vector<SweepResult>&
     for (const auto& [group, members] : lines) {
       if (members.size() < 2) continue;
       std::string coords;
-      for (std::size_t i : members) coords += (coords.empty() ? "" : " ") + num(X(pts[i].x)) + "," + num(Y(pts[i].y));
+      for (std::size_t i : members) { // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "literal" + string&&
+        if (!coords.empty()) coords += ' ';
+        coords += num(X(pts[i].x));
+        coords += ',';
+        coords += num(Y(pts[i].y));
+      }
       s += "<polyline class=\"series\" data-technique=\"" + html::escape(technique) + "\" points=\"" + coords +
            "\" fill=\"none\" stroke=\"" + techniqueColor(plan, technique) + "\" stroke-width=\"1.5\" stroke-opacity=\"0.7\"/>\n";
     }
