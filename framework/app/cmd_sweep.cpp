@@ -110,7 +110,8 @@ int sweepMain(int argc, char** argv, SweepCollection* collected) {
   const SweepPlan plan = planSweep(frameArgs, request);
   // Every output is checked before anything changes: a refused sweep leaves everything as it was.
   std::error_code ec;
-  const bool emitDirExists = !emit.empty() && fs::is_directory(fs::path(emit).parent_path().empty() ? "." : fs::path(emit).parent_path(), ec);
+  const fs::path emitDir = fs::path(emit).parent_path().empty() ? fs::path(".") : fs::path(emit).parent_path();
+  const bool emitDirExists = !emit.empty() && fs::is_directory(emitDir, ec); // else DIR itself, created below
   if (emitDirExists) checkOutputPath(emit);
   if (frameArgs.has("--save-preset")) checkOutputPath(frameArgs.get("--save-preset"));
   prepareSweepFolder(plan.dir, args.has("--force")); // exit 6 unless new, empty, or a sweep with --force

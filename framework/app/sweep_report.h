@@ -1,6 +1,9 @@
-// The sweep's report.html (docs/sweeps.md): one self-contained page, no network and no files
-// referenced: an inline SVG chart of error against time with the Pareto front, a table of the
-// points with thumbnails and error heat maps as data: URIs, the parameters and the run metadata.
+// The sweep's report.html (docs/sweeps.md): one self-contained page, nothing to fetch: how the
+// times were taken (and a warning when they are not to be trusted), an inline SVG chart of error
+// against time with the Pareto front, the command that reproduces the sweep, notes, a table of
+// the points with thumbnails and error heat maps as data: URIs (linked to the full-size images
+// in the sweep folder by relative paths), the parameters and the run metadata. The showcase's
+// atlas reuses the chart, the heat-map scale and the warning.
 #pragma once
 #include "app/sweep_plan.h"
 #include "image/metrics.h"
