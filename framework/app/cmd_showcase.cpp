@@ -1,12 +1,16 @@
-// rtlab showcase: the main job. Renders the plain lit frame of every built-in scene and every
-// registered technique on its showcase scene (color, the stage's AOV, its debug views), with
-// stats, into an output folder, and writes index.html showing the images, the per-pass timings,
-// the resources and the parameters. Files are written atomically; index.html comes last.
+// rtlab showcase: the main job. First the measured atlas (showcase_atlas.h): per stage with a
+// reference, a small sweep of its techniques, shown as each technique beside the reference with
+// its error figures and heat map, and the stage's error-against-time chart. Then the plain lit
+// frame of every built-in scene and every registered technique on its showcase scene (color, the
+// stage's AOV, its debug views), with stats. All into an output folder, with index.html showing
+// them (relative links only). Files are written atomically; index.html comes last.
 #include "app/commands.h"
 #include "app/frame_options.h"
 #include "app/html.h"
 #include "app/measure.h"
 #include "app/run_info.h"
+#include "app/showcase_atlas.h"
+#include "app/sweep_report.h"
 #include "frame/aovs.h"
 #include "frame/registry.h"
 #include "frame/stages.h"
@@ -17,6 +21,7 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -45,12 +50,15 @@ int runShowcase(int argc, char** argv) {
       {"--frames", "", true, "N", "measured frames per render, after 2 warm-up frames when N > 1 (default 5)"},
       {"--backend", "", true, "B", "headless context: auto|egl|osmesa (default auto)"},
       {"--timing", "", true, "M", "pass timing: auto|gpu-query|cpu-finish (default auto)"},
+      {"--spp", "", true, "N", "the atlas references' samples per pixel, 1..65536 (default 32)"},
   };
   Args args("showcase", specs, argc, argv, 2);
   if (args.help()) {
-    std::cout << formatHelp("rtlab showcase [--out DIR] [--size WxH] [--frames N]",
-                            "Renders every built-in scene and every technique on its showcase scene, with stats,\n"
-                            "into DIR, and writes DIR/index.html.",
+    std::cout << formatHelp("rtlab showcase [--out DIR] [--size WxH] [--frames N] [--spp N]",
+                            "The measured atlas: per stage with a reference (shadow, ao), a small sweep of its\n"
+                            "techniques into DIR/sweeps/<stage>/, each technique beside the reference with its\n"
+                            "RMSE, FLIP and heat map, and the error-against-time chart. Then every built-in scene\n"
+                            "and every technique on its showcase scene, with stats. Writes DIR/index.html.",
                             specs);
     return 0;
   }
@@ -60,11 +68,23 @@ int runShowcase(int argc, char** argv) {
   if (args.has("--frames")) options.frames = int(parseIntOption("--frames", args.get("--frames"), 1, 1000));
   if (args.has("--backend")) options.backend = parseBackend(args.get("--backend"));
   if (args.has("--timing")) options.timing = parseTimingChoice(args.get("--timing"));
+  AtlasOptions atlas;
+  if (args.has("--spp")) atlas.spp = int(parseIntOption("--spp", args.get("--spp"), 1, 65536));
+  for (const char* o : {"--backend", "--timing"})
+    if (args.has(o)) atlas.frameArgs.insert(atlas.frameArgs.end(), {o, args.get(o)});
   const std::string outDir = args.get("--out", "out");
   std::error_code ec;
   std::filesystem::create_directories(outDir, ec);
   if (ec) outputError("cannot create '" + outDir + "': " + ec.message());
   checkOutputPath(outDir + "/index.html");
+  const auto started = std::chrono::steady_clock::now();
+
+  // The atlas first: its sweeps' jobs are child processes that want the whole machine.
+  atlas.outDir = outDir;
+  atlas.width = options.width;
+  atlas.height = options.height;
+  atlas.frames = options.frames;
+  const std::vector<AtlasStage> stagesShown = buildAtlas(atlas);
 
   const TechniqueRegistry& registry = TechniqueRegistry::instance();
   std::vector<Job> jobs;
@@ -80,8 +100,13 @@ int runShowcase(int argc, char** argv) {
                      html::escape(context->backendName()) + " &middot; timing " + timingName(timing) + " &middot; " +
                      std::to_string(options.width) + "x" + std::to_string(options.height) + ", median of " +
                      std::to_string(options.frames) + " frames</p>\n";
-  std::string toc = "<ul>";
+  std::string toc = "<h2>Contents</h2><p>The measured atlas</p><ul>";
   std::string sections;
+  for (const auto& st : stagesShown) {
+    toc += "<li><a href=\"#" + html::escape(st.anchor) + "\">" + html::escape(st.title) + "</a></li>";
+    sections += "<h2 id=\"" + html::escape(st.anchor) + "\">" + html::escape(st.title) + "</h2>\n" + st.html;
+  }
+  toc += "</ul><p>Every scene and technique</p><ul>";
   for (std::size_t k = 0; k < jobs.size(); ++k) {
     const Job& job = jobs[k];
     std::cerr << (tty ? "\r" : "") << "[" << k + 1 << "/" << jobs.size() << "] " << fileStem(job) << (tty ? "        " : "\n")
@@ -137,8 +162,13 @@ int runShowcase(int argc, char** argv) {
   }
   if (tty) std::cerr << "\n";
   body += toc + "</ul>\n" + sections;
-  writeTextAtomically(outDir + "/index.html", html::page("rtlab showcase", body));
-  std::cerr << "wrote " << outDir << "/index.html (" << jobs.size() << " renders)\n";
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  body += "<p class=\"meta\">Made in " + std::to_string(int(seconds + 0.5)) + " s.</p>\n";
+  const std::string css = ".atlas figure{vertical-align:top}.atlas figure img{display:block;width:240px}"
+                          ".atlas img.heat{margin-top:2px}.figures{font-variant-numeric:tabular-nums}\n";
+  writeTextAtomically(outDir + "/index.html", html::page("rtlab showcase", body, css + sweepPageCss()));
+  std::cerr << "wrote " << outDir << "/index.html (" << stagesShown.size() << " stage sweeps, " << jobs.size()
+            << " renders) in " << int(seconds + 0.5) << " s\n";
   return 0;
 }
 

@@ -1,4 +1,4 @@
-// Small helpers for the self-contained HTML pages rtlab writes (showcase now, sweep reports later).
+// Small helpers for the self-contained HTML pages rtlab writes (the showcase, sweep reports).
 #pragma once
 #include <string>
 #include <vector>

@@ -1,7 +1,9 @@
 #include "app/sweep_collect.h"
 
 #include "app/html.h"
+#include "app/sweep_heat.h"
 #include "app/sweep_jobs.h"
+#include "frame/aovs.h"
 #include "app/sweep_report.h"
 #include "image/image.h"
 #include "image/metrics.h"
@@ -48,12 +50,16 @@ std::string pngBase64(const Image& image, PngEncoding encoding = PngEncoding::Li
   return base64Encode(bytes.data(), bytes.size());
 }
 
-std::string joinDistinct(const std::vector<std::string>& values) {
+std::vector<std::string> distinct(const std::vector<std::string>& values) {
   std::vector<std::string> seen;
   for (const auto& v : values)
     if (std::find(seen.begin(), seen.end(), v) == seen.end()) seen.push_back(v);
+  return seen;
+}
+
+std::string joinDistinct(const std::vector<std::string>& values) {
   std::string s;
-  for (const auto& v : seen) s += (s.empty() ? "" : "; ") + v;
+  for (const auto& v : distinct(values)) s += (s.empty() ? "" : "; ") + v;
   return s;
 }
 
@@ -80,8 +86,10 @@ std::vector<std::string> sweepCsvHeader(const SweepPlan& plan) {
   return h;
 }
 
-void collectSweep(const std::string& dirArg) {
-  const SweepPlan plan = readSweepPlan(dirArg);
+SweepCollection collectSweep(const std::string& dirArg) {
+  SweepCollection c;
+  c.plan = readSweepPlan(dirArg);
+  const SweepPlan& plan = c.plan;
 
   // Everything must be there before anything is written.
   std::vector<std::string> missingPoints, missingRefs;
@@ -106,11 +114,12 @@ void collectSweep(const std::string& dirArg) {
   std::map<std::string, Image> references;
   for (const auto& r : plan.references) references[r.hash] = readImage(referencePath(plan, r.hash));
 
-  // Pass 1: metrics, and the largest per-pixel error of the sweep. Only thumbnails stay in
-  // memory, so a sweep of thousands of points does not hold thousands of images.
-  std::vector<SweepResult> results;
+  // Pass 1: metrics, and the distribution of the per-pixel errors of the whole sweep. Only
+  // thumbnails stay in memory, so a sweep of thousands of points does not hold thousands of images.
+  std::vector<SweepResult>& results = c.results;
   std::vector<std::string> renderers, backends, timings;
-  float scale = 0;
+  std::vector<std::pair<double, double>> measured; // each point's measured interval (unix seconds)
+  ErrorPercentile errors;
   for (const auto& p : plan.points) {
     const fs::path dir = pointDir(plan, p.index);
     SweepResult r;
@@ -128,22 +137,38 @@ void collectSweep(const std::string& dirArg) {
     } catch (const nlohmann::json::exception& e) {
       inputError("invalid point stats '" + statsPath + "': " + e.what());
     }
+    // done.json's "measured" and "software" (absent in points of an older rtlab).
+    const auto done = nlohmann::json::parse(readFileOrThrow((dir / "done.json").string()), nullptr, false);
+    if (done.is_object()) {
+      if (done.value("software", false)) c.info.software = true;
+      const auto it = done.find("measured");
+      if (it != done.end() && it->is_array() && it->size() == 2 && (*it)[0].is_number() && (*it)[1].is_number())
+        measured.emplace_back((*it)[0].get<double>(), (*it)[1].get<double>());
+    }
     const Image aov = readImage((dir / "aov.exr").string());
     const Image& ref = references.at(p.reference);
     r.metrics = computeMetrics(ref, aov); // B (the point) against A (the reference)
-    const Image error = absoluteErrorImage(ref, aov);
-    for (std::size_t i = 0; i < error.pixelCount(); ++i)
-      if ((!error.hasMask() || error.mask[i] > 0.5f) && std::isfinite(error.pixels[i])) scale = std::max(scale, error.pixels[i]);
-    r.aovPng = pngBase64(aov);
+    addErrorImage(errors, absoluteErrorImage(ref, aov));
+    r.aovPng = pngBase64(aov, pngEncodingForAov(plan.aov));
+    r.aovFile = "points/" + pointName(p.index) + "/aov.png";
+    r.heatFile = "points/" + pointName(p.index) + "/error.png";
+    writeImage((fs::path(plan.dir) / r.aovFile).string(), aov, pngEncodingForAov(plan.aov));
     results.push_back(std::move(r));
   }
+  for (std::size_t i = 0; i < measured.size(); ++i)
+    for (std::size_t j = 0; j < measured.size(); ++j)
+      if (i != j && measured[i].first < measured[j].second && measured[j].first < measured[i].second) {
+        ++c.info.concurrentPoints;
+        break;
+      }
 
-  // Pass 2: heat maps on one scale for the whole sweep, so that they compare.
+  // Pass 2: heat maps on one scale for the whole sweep, so that they compare (sweep_heat.h).
+  const double scale = heatScale(errors);
   for (auto& r : results) {
     const fs::path dir = pointDir(plan, r.point->index);
     const Image error = absoluteErrorImage(references.at(r.point->reference), readImage((dir / "aov.exr").string()));
-    const Image heat = errorHeatmap(error, scale);
-    writeImage((dir / "error.png").string(), heat);
+    const Image heat = errorHeatmap(error, float(scale));
+    writeImage((fs::path(plan.dir) / r.heatFile).string(), heat);
     r.heatPng = pngBase64(heat);
   }
 
@@ -166,15 +191,36 @@ void collectSweep(const std::string& dirArg) {
     csv += csvLine(row);
   }
 
-  SweepReportInfo info;
+  SweepReportInfo& info = c.info;
   info.renderer = joinDistinct(renderers);
   info.backend = joinDistinct(backends);
   info.timing = joinDistinct(timings);
   info.heatScale = scale;
-  for (const auto& r : plan.references) info.references.emplace_back(r.hash, pngBase64(references.at(r.hash)));
+  info.heatMax = errors.max();
+  info.colorBarPng = colorBarPngBase64(scale);
+  for (const auto& r : plan.references) {
+    const std::string file = "reference/" + r.hash + ".png";
+    writeImage((fs::path(plan.dir) / file).string(), references.at(r.hash), pngEncodingForAov(plan.aov));
+    info.references.push_back({r.hash, pngBase64(references.at(r.hash), pngEncodingForAov(plan.aov)), file});
+  }
+
+  // sweep.json gains what the run measured on, so the plan file says what decided the timings.
+  nlohmann::ordered_json planJson = sweepPlanToJson(plan);
+  nlohmann::ordered_json run;
+  run["renderer"] = distinct(renderers);
+  run["backend"] = distinct(backends);
+  run["timing"] = distinct(timings);
+  run["software"] = info.software;
+  run["concurrent_points"] = info.concurrentPoints;
+  const std::string warning = sweepTimingWarning(plan, info);
+  run["warning"] = warning.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(warning);
+  run["heat_scale"] = info.heatScale;
+  planJson["measured"] = run;
 
   writeTextAtomically((fs::path(plan.dir) / "results.csv").string(), csv);
+  writeTextAtomically((fs::path(plan.dir) / "sweep.json").string(), planJson.dump(2) + "\n");
   writeTextAtomically((fs::path(plan.dir) / "report.html").string(), sweepReportHtml(plan, results, info));
+  return c;
 }
 
 } // namespace rtlab

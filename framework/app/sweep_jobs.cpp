@@ -67,6 +67,10 @@ std::string childMessage(const std::string& log) {
   return !error.empty() ? error : !last.empty() ? last : "no output";
 }
 
+double unixSeconds() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
 struct Job {
   bool point = false;
   int index = 0;
@@ -251,7 +255,9 @@ void runPointJob(const SweepPlan& plan, int n) {
     renderer.render(frame.params, frame.options.width, frame.options.height, outputs, warmup);
     drainGlErrors();
   }
+  const double measuredFrom = unixSeconds();
   const FrameStats stats = renderMeasured(renderer, frame, outputs, timing);
+  const double measuredTo = unixSeconds();
   writeImage((dir / "aov.exr").string(), renderer.readAov(plan.aov));
   writeImage((dir / "color.png").string(), renderer.readDisplayColor(), PngEncoding::Srgb);
   writeTextAtomically((dir / "stats.json").string(), statsJson(frame, *context, timing, stats).dump(2) + "\n");
@@ -264,6 +270,10 @@ void runPointJob(const SweepPlan& plan, int n) {
   for (const auto& [k, v] : point.values) values[k] = v;
   done["values"] = values;
   done["reference"] = point.reference;
+  // When the measured frames ran and on what: --collect finds points measured at the same time
+  // on a software rasterizer, whose timings are not the technique's alone (docs/sweeps.md).
+  done["measured"] = {measuredFrom, measuredTo};
+  done["software"] = context->info().software;
   writeTextAtomically((dir / "done.json").string(), done.dump(2) + "\n");
 }
 

@@ -100,6 +100,8 @@ void hashVec3(Fnv1a64& h, const glm::vec3& v) { h.f32(v.x).f32(v.y).f32(v.z); }
 
 } // namespace
 
+int sweepWarmupFrames(const SweepPlan& plan) { return plan.frames > 1 ? 2 : 1; }
+
 std::string pointName(int index) {
   char buf[16];
   std::snprintf(buf, sizeof buf, "%03d", index);
@@ -200,6 +202,10 @@ SweepPlan planSweep(const Args& frameArgs, const SweepRequest& request) {
   plan.version = versionString();
   plan.commit = gitCommit();
   plan.spp = request.spp;
+  plan.jobs = request.jobs;
+  plan.command = request.command;
+  std::error_code cwdError;
+  plan.cwd = fs::current_path(cwdError).string();
 
   // Techniques: registered, not 'none', all in one stage that has a reference.
   plan.techniques = splitTechniques(request.techniques);
@@ -299,6 +305,11 @@ nlohmann::ordered_json sweepPlanToJson(const SweepPlan& plan) {
   j["backend"] = plan.backend;
   j["timing"] = plan.timing;
   j["spp"] = plan.spp;
+  // What decides the timings besides size, frames, backend and timing (docs/sweeps.md).
+  j["warmup_frames"] = sweepWarmupFrames(plan);
+  j["jobs"] = plan.jobs > 0 ? nlohmann::ordered_json(plan.jobs) : nlohmann::ordered_json();
+  j["command"] = plan.command;
+  j["cwd"] = plan.cwd;
   j["base_techniques"] = plan.baseTechniques;
   j["base_params"] = plan.baseParams;
   j["techniques"] = plan.techniques;
@@ -364,6 +375,10 @@ SweepPlan readSweepPlan(const std::string& dirArg) {
     plan.backend = j.at("backend").get<std::string>();
     plan.timing = j.at("timing").get<std::string>();
     plan.spp = j.at("spp").get<int>();
+    // Added after schema 1 was first written: absent in older plans.
+    if (j.contains("jobs") && j["jobs"].is_number_integer()) plan.jobs = j["jobs"].get<int>();
+    plan.command = j.value("command", std::string());
+    plan.cwd = j.value("cwd", std::string());
     plan.baseTechniques = j.at("base_techniques").get<std::vector<std::string>>();
     plan.baseParams = j.at("base_params");
     plan.techniques = j.at("techniques").get<std::vector<std::string>>();

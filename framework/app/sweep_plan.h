@@ -38,6 +38,9 @@ struct SweepPlan {
   unsigned seed = 1;
   std::string backend = "auto", timing = "auto";
   int spp = 64;
+  int jobs = 0;         // points run at a time by the direct sweep; 0: unknown (--emit-jobs)
+  std::string command;  // the sweep's command line as given, shell-quoted ("rtlab sweep ..."): reproduces it
+  std::string cwd;      // the working directory it was given in (relative paths in `command`)
   std::vector<std::string> baseTechniques; // active techniques of other stages (from --preset)
   nlohmann::ordered_json baseParams = nlohmann::ordered_json::object(); // resolved values that differ from the defaults
   std::vector<std::string> techniques;     // swept, in -t order
@@ -50,8 +53,14 @@ struct SweepRequest {
   std::vector<std::string> techniques; // -t values, comma lists allowed
   std::vector<std::string> varies;     // --vary values
   int spp = 64;
+  int jobs = 0;        // 0 with --emit-jobs
   std::string dir;
+  std::string command; // shell-quoted command line
 };
+
+// Unmeasured frames a point renders before its measured ones: 2 when frames > 1 (as render), 1
+// otherwise (docs/sweeps.md "What a point renders").
+int sweepWarmupFrames(const SweepPlan& plan);
 
 // Resolves and validates everything (exit 2/3 on bad input). `frameArgs` holds the scene and
 // frame options only (no -t).

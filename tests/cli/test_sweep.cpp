@@ -3,6 +3,7 @@
 // page); --emit-jobs, running the jobs, then --collect gives the same CSV as a direct sweep
 // (except the timing columns); the report opens in headless Chromium without console errors and
 // its screenshot is not blank (kept as RTLAB_TEST_TMP/sweep/report.png); bad input fails early.
+#include "chromium.h"
 #include "process.h"
 
 #include "image/image.h"
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -75,8 +77,9 @@ std::vector<std::string> with(std::vector<std::string> args, const std::vector<s
 }
 
 const char* kReportChecker = R"PY(
-import html.parser, re, sys, xml.etree.ElementTree as ET
+import html.parser, os, re, sys, xml.etree.ElementTree as ET
 text = open(sys.argv[1], encoding='utf-8').read()
+folder = os.path.dirname(os.path.abspath(sys.argv[1]))
 VOID = {'area', 'base', 'br', 'col', 'embed', 'hr', 'img', 'input', 'link', 'meta', 'source', 'track', 'wbr'}
 errors = []
 class Checker(html.parser.HTMLParser):
@@ -111,8 +114,14 @@ if c.stack:
 if not text.startswith('<!DOCTYPE html>'):
     errors.append('no doctype')
 for tag, k, v in c.refs:
-    if not (v.startswith('data:') or v.startswith('#')):
+    if v.startswith('data:') or v.startswith('#'):
+        continue
+    # A relative link to a file of the sweep folder (a full-size image): inside it, and there.
+    target = v.split('#')[0]
+    if ':' in target or target.startswith('/') or '..' in target.split('/'):
         errors.append('external reference %s=%r on <%s>' % (k, v[:60], tag))
+    elif not os.path.isfile(os.path.join(folder, target)):
+        errors.append('broken link %s=%r on <%s>' % (k, v[:60], tag))
 for bad in ('http://', 'https://', '@import', 'url('):
     if bad in text:
         errors.append('%r in the page' % bad)
@@ -127,6 +136,27 @@ for svg in svgs:
             errors.append('%d points in the chart' % len(circles))
         if not [e for e in root.iter() if e.tag == 'path' and e.get('class') == 'pareto']:
             errors.append('no Pareto front')
+        # Each point labelled with its value; the technique's points joined in value order.
+        labels = [e.text for e in root.iter() if e.tag == 'text' and e.get('class') == 'label']
+        if labels != sys.argv[3].split(','):
+            errors.append('point labels %s' % labels)
+        series = [e for e in root.iter() if e.tag == 'polyline' and e.get('class') == 'series']
+        if len(series) != 1 or len(series[0].get('points').split()) != int(sys.argv[2]):
+            errors.append('%d joining lines' % len(series))
+        else:
+            xs = [float(p.split(',')[0]) for p in series[0].get('points').split()]
+            cx = [float(e.get('cx')) for e in circles]
+            if sorted(xs) != sorted(cx):
+                errors.append('the line does not join the points')
+        # The legend lies outside the plot area (the first rect).
+        plot = next(e for e in root.iter() if e.tag == 'rect')
+        right = float(plot.get('x')) + float(plot.get('width'))
+        legend = [e for e in root.iter() if e.tag == 'g' and e.get('class') == 'legend']
+        xs = [float(e.get(a)) for g in legend for e in g.iter() for a in ('x', 'x1', 'cx') if e.get(a) is not None]
+        if not xs or min(xs) < right:
+            errors.append('legend inside the plot (x %s, plot right %s)' % (min(xs) if xs else None, right))
+    except StopIteration:
+        errors.append('no plot area')
     except ET.ParseError as e:
         errors.append('svg not well-formed: %s' % e)
 if c.imgs < 2 * int(sys.argv[2]) + 1:
@@ -198,11 +228,53 @@ TEST_F(Sweep, ThreePointsWriteThreeCsvRows) {
 TEST_F(Sweep, ReportIsSelfContainedHtmlWithWellFormedSvg) {
   const fs::path report = s_direct / "report.html";
   ASSERT_TRUE(fs::is_regular_file(report));
-  const auto r = runProcess("/usr/bin/python3", {"-c", kReportChecker, report.string(), "3"});
+  const auto r = runProcess("/usr/bin/python3", {"-c", kReportChecker, report.string(), "3", "256,512,1024"});
   EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
   const std::string html = slurp(report);
   for (const char* needle : {"cpu-finish", "shadow.resolution", "Pareto front", "seed", "commit"})
     EXPECT_NE(html.find(needle), std::string::npos) << needle;
+  // The command that reproduces it, shell-quoted as given.
+  EXPECT_NE(html.find("<pre class=\"command\"><code>rtlab sweep --scene contact --size 32x32 --spp 16 -t shadow_map "
+                      "--vary shadow.resolution=256,512,1024 --out "),
+            std::string::npos);
+  // Heat maps on one stated scale with a colour bar, each linked to its full-size image.
+  EXPECT_NE(html.find("class=\"colorbar\""), std::string::npos);
+  EXPECT_NE(html.find("99th percentile"), std::string::npos);
+  EXPECT_NE(html.find("<a href=\"points/000/error.png\">"), std::string::npos);
+}
+
+// sweep.json and the page record what decided the timings: jobs, frames, warm-up, timing,
+// renderer, backend, size.
+TEST_F(Sweep, RecordsWhatDecidedTheTimingsAndWarnsOfParallelJobs) {
+  const auto plan = nlohmann::json::parse(slurp(s_direct / "sweep.json"));
+  EXPECT_EQ(plan["schema"], 1);
+  EXPECT_EQ(plan["jobs"], 2);
+  EXPECT_EQ(plan["frames"], 1);
+  EXPECT_EQ(plan["warmup_frames"], 1) << "--frames 1: one unmeasured frame first";
+  EXPECT_EQ(plan["size"], nlohmann::json({32, 32}));
+  EXPECT_EQ(plan["timing"], "auto");
+  EXPECT_NE(plan["command"].get<std::string>().find("rtlab sweep --scene contact"), std::string::npos) << plan["command"];
+  const auto& measured = plan["measured"];
+  ASSERT_TRUE(measured.is_object()) << plan.dump(2);
+  ASSERT_EQ(measured["renderer"].size(), 1u);
+  EXPECT_FALSE(measured["renderer"][0].get<std::string>().empty());
+  EXPECT_EQ(measured["backend"].size(), 1u);
+  ASSERT_EQ(measured["timing"].size(), 1u);
+  EXPECT_TRUE(measured["timing"][0] == "cpu-finish" || measured["timing"][0] == "gpu-query");
+  EXPECT_TRUE(measured["software"].is_boolean());
+  const std::string html = slurp(s_direct / "report.html");
+  for (const char* needle : {"jobs", "2 at a time", "1 unmeasured, then 1 measured", "timing method", "renderer", "backend"})
+    EXPECT_NE(html.find(needle), std::string::npos) << needle;
+
+  // Two jobs at a time on a software rasterizer: the page says the timings are not to be
+  // trusted, near the chart (before it); sweep.json carries the same warning. (With --jobs 1:
+  // FolderHoldingASweepIsRefusedUnlessForced.)
+  if (!measured["software"].get<bool>()) GTEST_SKIP() << "not a software rasterizer: " << measured["renderer"];
+  const auto warning = html.find("<p class=\"warning\"");
+  ASSERT_NE(warning, std::string::npos);
+  EXPECT_LT(warning, html.find("<svg")) << "the warning comes before the chart";
+  EXPECT_NE(html.find("--jobs 2", warning), std::string::npos);
+  EXPECT_TRUE(plan["measured"]["warning"].is_string());
 }
 
 TEST_F(Sweep, EmitJobsThenCollectGivesTheDirectSweepsCsv) {
@@ -241,38 +313,79 @@ TEST_F(Sweep, EmitJobsThenCollectGivesTheDirectSweepsCsv) {
   EXPECT_TRUE(fs::is_regular_file(dir / "report.html"));
 }
 
+// Every file under a folder with its content: "nothing changed" compares two of these.
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = slurp(e.path());
+  return files;
+}
+
+// A folder that holds a sweep is refused (exit 6, one line naming it, nothing changed) unless
+// --force, which replaces the sweep wholly: no point of the earlier sweep survives.
+TEST_F(Sweep, FolderHoldingASweepIsRefusedUnlessForced) {
+  const fs::path dir = s_direct.parent_path() / "folder-rule" / "sweep";
+  fs::remove_all(dir.parent_path());
+  fs::create_directories(dir.parent_path());
+  fs::copy(s_direct, dir, fs::copy_options::recursive);
+  const auto before = snapshot(dir);
+  ASSERT_TRUE(before.count("points/002/done.json"));
+
+  for (const auto& extra : std::vector<std::vector<std::string>>{
+           {}, {"--emit-jobs", (dir.parent_path() / "jobs.txt").string()}}) {
+    const auto r = runProcess(RTLAB_BINARY, with(with(kSweepArgs, {"--out", dir.string()}), extra));
+    EXPECT_EQ(r.exitCode, 6) << r.err;
+    EXPECT_EQ(rtlab::test::lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("rtlab: error: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(dir.string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
+    EXPECT_TRUE(snapshot(dir) == before) << "a refused sweep changed its folder";
+    EXPECT_FALSE(fs::exists(dir.parent_path() / "jobs.txt"));
+  }
+
+  // --force never deletes what is not a sweep's: a folder with a foreign file is refused.
+  const fs::path mixed = dir.parent_path() / "mixed";
+  fs::create_directories(mixed / "points");
+  { std::ofstream(mixed / "notes.txt") << "mine"; }
+  const auto foreign = runProcess(RTLAB_BINARY, with(kSweepArgs, {"--out", mixed.string(), "--force"}));
+  EXPECT_EQ(foreign.exitCode, 6) << foreign.err;
+  EXPECT_EQ(rtlab::test::lineCount(foreign.err), 1) << foreign.err;
+  EXPECT_NE(foreign.err.find("notes.txt"), std::string::npos) << foreign.err;
+  EXPECT_EQ(slurp(mixed / "notes.txt"), "mine");
+  EXPECT_TRUE(fs::is_directory(mixed / "points"));
+
+  // --force with one point, one job: the earlier three points are gone.
+  const auto forced = runProcess(RTLAB_BINARY, {"sweep", "--scene", "contact", "--size", "32x32", "--spp", "16", "-t",
+                                                "shadow_map", "--vary", "shadow.resolution=512", "--out", dir.string(),
+                                                "--force"},
+                                 120);
+  ASSERT_EQ(forced.exitCode, 0) << forced.err;
+  EXPECT_TRUE(fs::is_regular_file(dir / "points" / "000" / "done.json"));
+  EXPECT_FALSE(fs::exists(dir / "points" / "001")) << "stale point of the earlier sweep";
+  EXPECT_FALSE(fs::exists(dir / "points" / "002")) << "stale point of the earlier sweep";
+  EXPECT_EQ(lines(slurp(dir / "results.csv")).size(), 2u);
+  const auto plan = nlohmann::json::parse(slurp(dir / "sweep.json"));
+  EXPECT_EQ(plan["points"].size(), 1u);
+  EXPECT_EQ(plan["jobs"], 1);
+  // One job at a time: no warning about parallel timings.
+  EXPECT_TRUE(plan["measured"]["warning"].is_null()) << plan["measured"];
+  EXPECT_EQ(slurp(dir / "report.html").find("class=\"warning\""), std::string::npos);
+}
+
 TEST_F(Sweep, ReportInHeadlessChromium) {
-  const fs::path chromium = "/usr/bin/chromium";
-  // scripts/test.sh installs chromium (setup.sh --test-deps), so under CI its absence is a failure;
-  // a developer's plain build may lack it and skips this one test.
-  if (!fs::exists(chromium)) {
-    if (std::getenv("CI")) FAIL() << "CI is set but /usr/bin/chromium is missing (scripts/setup.sh --test-deps)";
-    GTEST_SKIP() << "no /usr/bin/chromium (scripts/setup.sh --test-deps installs it)";
+  std::string why;
+  if (!rtlab::test::chromiumAvailable(why)) {
+    if (std::getenv("CI")) FAIL() << why;
+    GTEST_SKIP() << why;
   }
   const fs::path shot = kRoot / "report.png"; // kept as the test's artifact
-  const fs::path profile = s_direct.parent_path() / "chromium-profile";
   fs::remove(shot);
-  const auto r = runProcess(chromium.string(),
-                            {"--headless", "--no-sandbox", "--disable-gpu", "--enable-logging=stderr", "--v=0",
-                             "--no-first-run", "--user-data-dir=" + profile.string(), "--window-size=1200,1400",
-                             "--screenshot=" + shot.string(), "file://" + (s_direct / "report.html").string()},
-                            90);
+  const auto r = rtlab::test::runChromium(s_direct / "report.html", s_direct.parent_path() / "chromium-profile", shot);
   ASSERT_FALSE(r.timedOut);
   EXPECT_EQ(r.exitCode, 0) << r.err;
-  for (const auto& line : lines(r.err))
-    EXPECT_EQ(line.find("CONSOLE"), std::string::npos) << "console message: " << line;
+  for (const auto& line : rtlab::test::consoleMessages(r.err)) ADD_FAILURE() << "console message: " << line;
   ASSERT_TRUE(fs::is_regular_file(shot)) << r.err;
-  const rtlab::Image image = rtlab::readImage(shot.string());
-  ASSERT_GT(image.width, 100);
-  // Not blank: the page has text, a chart and images, so the pixels vary.
-  double sum = 0, sumSq = 0;
-  for (float v : image.pixels) sum += v, sumSq += double(v) * v;
-  const double n = double(image.pixels.size());
-  const double variance = sumSq / n - (sum / n) * (sum / n);
-  EXPECT_GT(variance, 1e-3) << "the screenshot is blank";
-  std::size_t dark = 0;
-  for (float v : image.pixels) dark += v < 0.5f;
-  EXPECT_GT(dark, image.pixels.size() / 200) << "no text or chart drawn";
+  rtlab::test::expectNotBlank(rtlab::readImage(shot.string()));
 }
 
 // ---- bad input: exit 2 or 3 before anything is rendered or written ----
