@@ -10,7 +10,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -124,14 +126,25 @@ TEST_F(CliMessages, DidYouMeanForTechniquesScenesAndAovs) {
 
 // --- numbers in messages ------------------------------------------------------------------------
 
-// Digits a person would not type: 8 or more after the point (float noise such as 0.100000001 or
-// 8.54400349), or an exponent on a plain integer ("1e+05").
+// Digits a person would not type: a number longer than the shortest text of the float it reads
+// as (float noise such as 0.100000001 or 8.54400349, printed with 9 significant digits), or an
+// integer in exponent form ("1e+05"). Every value `rtlab list` prints is a declared default or
+// range: a double literal or a float, so its shortest float text is never longer than it.
 bool hasNoisyNumber(const std::string& text, std::string& found) {
-  static const std::regex noisy(R"((\d+\.\d{8,})|(\b\d(\.\d+)?e\+0?\d\b))");
-  std::smatch m;
-  if (!std::regex_search(text, m, noisy)) return false;
-  found = m.str();
-  return true;
+  static const std::regex number(R"(-?\d+(\.\d+)?(e[+-]\d+)?)");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it) {
+    const std::string t = it->str();
+    if (t.find_first_of(".e") == std::string::npos) continue; // an integer, as typed
+    const double d = std::strtod(t.c_str(), nullptr);
+    char buf[64];
+    const auto res = std::to_chars(buf, buf + sizeof buf, static_cast<float>(d));
+    const bool integerExponent = t.find("e+") != std::string::npos && d == std::floor(d) && std::abs(d) < 1e15;
+    if (integerExponent || t.size() > std::size_t(res.ptr - buf)) {
+      found = t;
+      return true;
+    }
+  }
+  return false;
 }
 
 TEST_F(CliMessages, NumbersAsTypedOrShortest) {
