@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <sstream>
 
 namespace rtlab {
@@ -77,6 +78,14 @@ long long parseIntOption(const std::string& option, const std::string& text, lon
   if (text.empty() || ec != std::errc() || ptr != text.data() + text.size() || v < min || v > max)
     usageError("invalid value '" + text + "' for " + option + ": expected an integer in [" + std::to_string(min) + ", " +
                std::to_string(max) + "]");
+  return v;
+}
+
+double parsePositiveNumber(const std::string& option, const std::string& text) {
+  double v = 0.0;
+  auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v) || !(v > 0.0))
+    usageError("invalid value '" + text + "' for " + option + ": expected a number > 0");
   return v;
 }
 

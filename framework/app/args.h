@@ -43,5 +43,7 @@ std::string formatHelp(const std::string& usage, const std::string& description,
 
 // Integer parsing for option values; Error(Usage) naming the option and the allowed range.
 long long parseIntOption(const std::string& option, const std::string& text, long long min, long long max);
+// A finite decimal number > 0; Error(Usage) naming the option otherwise.
+double parsePositiveNumber(const std::string& option, const std::string& text);
 
 } // namespace rtlab

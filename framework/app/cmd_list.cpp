@@ -2,6 +2,7 @@
 // --scene also the scene's light and camera parameters. --json gives CONTRACT.md's schema.
 #include "app/args.h"
 #include "app/commands.h"
+#include "frame/aovs.h"
 #include "frame/registry.h"
 #include "frame/stages.h"
 #include "params/param_spec.h"
@@ -42,10 +43,7 @@ int runList(int argc, char** argv) {
   std::vector<ParamSpec> sceneParams;
   if (args.has("--scene")) sceneParams = sceneParamSpecs(loadScene(args.get("--scene")));
 
-  std::vector<std::string> aovs;
-  for (const auto& a : builtinAovs()) aovs.push_back(a.name);
-  for (const auto& e : registry.entries())
-    for (const auto& v : e.info.debugViews) aovs.push_back(v.name);
+  const std::vector<std::string> aovs = knownAovNames(registry);
 
   if (args.has("--json")) {
     nlohmann::ordered_json j;

@@ -46,8 +46,7 @@ int runReference(int argc, char** argv) {
   const int spp = args.has("--spp") ? int(parseIntOption("--spp", args.get("--spp"), kReferenceMinSpp, kReferenceMaxSpp)) : 64;
   ResolvedFrame frame = resolveFrame(args);
   const std::string out = args.get("--out", frame.scene.name + "_" + aov + "_ref.exr");
-  imageFormatFromPath(out); // an unknown extension is a usage error before any work
-  checkOutputPath(out);
+  checkImageOutputPath(out); // before any work: a directory (6), an unknown extension (2)
   if (!frame.options.savePreset.empty()) checkOutputPath(frame.options.savePreset);
 
   auto context = createHeadlessContext(frame.options.backend);

@@ -3,6 +3,7 @@
 #include "frame/registry.h"
 #include "frame/stages.h"
 #include "util/error.h"
+#include "util/suggest.h"
 
 #include <algorithm>
 
@@ -11,6 +12,14 @@ namespace rtlab {
 bool isBuiltinAov(const std::string& aov) {
   const auto& list = builtinAovs();
   return std::any_of(list.begin(), list.end(), [&](const AovInfo& a) { return a.name == aov; });
+}
+
+std::vector<std::string> knownAovNames(const TechniqueRegistry& registry) {
+  std::vector<std::string> names;
+  for (const auto& a : builtinAovs()) names.push_back(a.name);
+  for (const auto& entry : registry.entries())
+    for (const auto& view : entry.info.debugViews) names.push_back(view.name);
+  return names;
 }
 
 void checkAovName(const std::string& aov, const std::vector<std::string>& active, const TechniqueRegistry& registry) {
@@ -25,7 +34,8 @@ void checkAovName(const std::string& aov, const std::vector<std::string>& active
       }
   std::string known;
   for (const auto& a : builtinAovs()) known += (known.empty() ? "" : ", ") + a.name;
-  usageError("unknown AOV '" + aov + "' (built-in: " + known + "; debug views: see 'rtlab list')");
+  usageError("unknown AOV '" + aov + "'" + didYouMean(aov, knownAovNames(registry)) + " (built-in: " + known +
+             "; debug views: see 'rtlab list')");
 }
 
 int aovChannels(const std::string& aov, const TechniqueRegistry& registry) {

@@ -13,6 +13,8 @@ class TechniqueRegistry;
 void checkAovName(const std::string& aov, const std::vector<std::string>& activeTechniques,
                   const TechniqueRegistry& registry);
 bool isBuiltinAov(const std::string& aov);
+// Every AOV name: the built-in ones, then each registered technique's debug views.
+std::vector<std::string> knownAovNames(const TechniqueRegistry& registry);
 // Channels of a known AOV (1 or 3); Error(Internal) if unknown.
 int aovChannels(const std::string& aov, const TechniqueRegistry& registry);
 

@@ -2,6 +2,7 @@
 
 #include "frame/stages.h"
 #include "util/error.h"
+#include "util/suggest.h"
 
 #include <algorithm>
 
@@ -40,8 +41,13 @@ const TechniqueEntry* TechniqueRegistry::find(const std::string& id) const {
 const TechniqueEntry& TechniqueRegistry::get(const std::string& id) const {
   if (const auto* e = find(id)) return *e;
   std::string known;
-  for (const auto& e : m_entries) known += e.info.id + ", ";
-  usageError("unknown technique '" + id + "' (known: " + known + "none)");
+  std::vector<std::string> ids;
+  for (const auto& e : m_entries) {
+    known += e.info.id + ", ";
+    ids.push_back(e.info.id);
+  }
+  ids.push_back("none");
+  usageError("unknown technique '" + id + "'" + didYouMean(id, ids) + " (known: " + known + "none)");
 }
 
 } // namespace rtlab

@@ -45,8 +45,13 @@ enum class ImageFormat { Png, Exr, Pfm };
 
 // From the file extension (.png .exr .pfm, case-insensitive); throws Error(Usage) otherwise.
 ImageFormat imageFormatFromPath(const std::string& path);
+// An output image named by the user, checked before any work: a directory is Error(Output)
+// naming it (not an unsupported format), then the extension (Error(Usage)), then the folder
+// (util/atomic_file.h checkOutputPath: missing or not writable is Error(Output)).
+ImageFormat checkImageOutputPath(const std::string& path);
 // For outputs that are PNG only (the viewer's screenshots): Error(Usage) "<what> must be a .png
-// file, got 'PATH'" unless the extension is .png (case-insensitive).
+// file, got 'PATH'" unless the extension is .png (case-insensitive); a directory is Error(Output)
+// naming it, as in checkImageOutputPath.
 void requirePngPath(const std::string& path, const std::string& what);
 
 // Writes atomically (util/atomic_file.h); throws Error(Output) naming the path on failure.

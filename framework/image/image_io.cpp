@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -78,7 +79,17 @@ ImageFormat imageFormatFromPath(const std::string& path) {
   usageError("unsupported image format '" + path + "' (use .png, .exr or .pfm)");
 }
 
+ImageFormat checkImageOutputPath(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) checkOutputPath(path); // throws, naming the directory
+  const ImageFormat format = imageFormatFromPath(path);
+  checkOutputPath(path);
+  return format;
+}
+
 void requirePngPath(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) checkOutputPath(path); // throws, naming the directory
   if (lowerExtension(path) != ".png") usageError(what + " must be a .png file, got '" + path + "'");
 }
 

@@ -1,28 +1,13 @@
 #include "params/param_set.h"
 
 #include "util/error.h"
+#include "util/suggest.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 
 namespace rtlab {
-namespace {
-
-// Edit distance, for "did you mean" hints on unknown keys.
-std::size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j)
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-    std::swap(prev, cur);
-  }
-  return prev[b.size()];
-}
-
-} // namespace
 
 void ParamSet::declare(const ParamSpec& spec) {
   if (has(spec.key)) throw Error(ExitCode::Internal, "parameter '" + spec.key + "' declared twice");
@@ -49,13 +34,9 @@ void ParamSet::declare(const std::vector<ParamSpec>& specs) {
 std::size_t ParamSet::indexOf(const std::string& key) const {
   auto it = m_index.find(key);
   if (it != m_index.end()) return it->second;
-  std::string best;
-  std::size_t bestDist = 4;
-  for (const auto& s : m_specs) {
-    std::size_t d = editDistance(key, s.key);
-    if (d < bestDist) { bestDist = d; best = s.key; }
-  }
-  usageError("unknown key '" + key + "'" + (best.empty() ? std::string(" (see 'rtlab list')") : " (did you mean '" + best + "'?)"));
+  std::vector<std::string> keys;
+  for (const auto& s : m_specs) keys.push_back(s.key);
+  usageError("unknown key '" + key + "'" + didYouMean(key, keys, " (see 'rtlab list')"));
 }
 
 const ParamSpec& ParamSet::spec(const std::string& key) const { return m_specs[indexOf(key)]; }

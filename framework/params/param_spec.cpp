@@ -1,31 +1,16 @@
 #include "params/param_spec.h"
 
 #include "util/error.h"
+#include "util/number_format.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <sstream>
 
 namespace rtlab {
 namespace {
-
-std::string formatNumber(double x) {
-  std::ostringstream os;
-  os.precision(9);
-  os << x;
-  return os.str();
-}
-
-// Shortest text that reads back as exactly x: used where a value must not look like a neighbour
-// (1 + 1e-9 printed with 9 digits reads "1", which would make "1 is out of [0, 1]").
-std::string formatExact(double x) {
-  char buf[64];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
-  return ec == std::errc() ? std::string(buf, end) : formatNumber(x);
-}
 
 std::string joinChoices(const std::vector<std::string>& choices) {
   std::string s;
@@ -126,8 +111,8 @@ void checkParamRange(const ParamSpec& spec, const ParamValue& value) {
     const bool integral = spec.type != ParamType::Float && spec.type != ParamType::Vec3 && spec.type != ParamType::Color;
     // Printed exactly: a value just outside the range must not read as the bound itself.
     const std::string shown = (spec.type == ParamType::Vec3 || spec.type == ParamType::Color)
-                                  ? formatExact(value.v[0]) + "," + formatExact(value.v[1]) + "," + formatExact(value.v[2])
-                                  : formatExact(x);
+                                  ? formatNumber(value.v[0]) + "," + formatNumber(value.v[1]) + "," + formatNumber(value.v[2])
+                                  : formatNumber(x);
     if (!std::isfinite(x) || x < spec.min || x > spec.max)
       usageError("value " + shown + " for '" + spec.key + "' is out of " + describeRange(spec));
     if (integral && x != std::floor(x))

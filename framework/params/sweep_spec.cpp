@@ -1,6 +1,7 @@
 #include "params/sweep_spec.h"
 
 #include "util/error.h"
+#include "util/number_format.h"
 
 #include <algorithm>
 #include <cctype>
@@ -12,16 +13,6 @@
 
 namespace rtlab {
 namespace {
-
-std::string shortest(double x) {
-  char buf[64];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
-  if (ec != std::errc()) {
-    std::snprintf(buf, sizeof buf, "%.17g", x);
-    return buf;
-  }
-  return std::string(buf, end);
-}
 
 double roundSignificant(double x, int digits) {
   if (x == 0 || !std::isfinite(x)) return x;
@@ -94,7 +85,7 @@ std::pair<std::string, std::string> splitVaryArgument(const std::string& text) {
 
 std::string canonicalParamText(const ParamSpec& spec, const ParamValue& value) {
   switch (spec.type) {
-  case ParamType::Float: return shortest(value.v[0]);
+  case ParamType::Float: return formatNumberExact(value.v[0]);
   case ParamType::Int: return std::to_string(std::llround(value.v[0]));
   case ParamType::Bool: return value.v[0] != 0 ? "true" : "false";
   case ParamType::Enum: {
@@ -104,7 +95,7 @@ std::string canonicalParamText(const ParamSpec& spec, const ParamValue& value) {
   }
   case ParamType::Vec3:
   case ParamType::Color:
-    return shortest(value.v[0]) + "," + shortest(value.v[1]) + "," + shortest(value.v[2]);
+    return formatNumberExact(value.v[0]) + "," + formatNumberExact(value.v[1]) + "," + formatNumberExact(value.v[2]);
   }
   return "";
 }

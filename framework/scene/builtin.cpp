@@ -3,6 +3,7 @@
 
 #include "scene/builtin_scenes.h"
 #include "util/error.h"
+#include "util/suggest.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -29,7 +30,7 @@ Scene makeBuiltinScene(const std::string& name) {
   if (name == "arealight") return builtin::makeAreaLight();
   std::string list;
   for (const std::string& n : builtinSceneNames()) list += (list.empty() ? "" : ", ") + n;
-  usageError("unknown scene '" + name + "' (built-in scenes: " + list + ")");
+  usageError("unknown scene '" + name + "'" + didYouMean(name, builtinSceneNames()) + " (built-in scenes: " + list + ")");
 }
 
 namespace builtin {

@@ -120,10 +120,24 @@ bool hasAreaLight(const tinygltf::Node& node) {
   return node.extras.IsObject() && node.extras.Has("rtlab_area_light");
 }
 
+int defaultSceneIndex(const tinygltf::Model& model) {
+  return model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
+}
+
+// The default scene's extras.ambient (docs/scene-format.md), validated by validateModel.
+void readAmbient(const tinygltf::Model& model, Scene& scene) {
+  const int sceneIndex = defaultSceneIndex(model);
+  if (sceneIndex < 0) return;
+  const tinygltf::Value& extras = model.scenes[static_cast<size_t>(sceneIndex)].extras;
+  if (!extras.IsObject() || !extras.Has("ambient")) return;
+  const tinygltf::Value& a = extras.Get("ambient");
+  for (int k = 0; k < 3; ++k) scene.ambient[k] = static_cast<float>(a.Get(k).GetNumberAsDouble());
+}
+
 // Depth-first, pre-order, children in file order; iterative (deep hierarchies are legal).
 std::vector<Placed> traverse(const tinygltf::Model& model, const std::string& file) {
   std::vector<int> roots;
-  const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
+  const int sceneIndex = defaultSceneIndex(model);
   if (sceneIndex >= 0) {
     roots = model.scenes[static_cast<size_t>(sceneIndex)].nodes;
   } else {
@@ -151,6 +165,7 @@ std::vector<Placed> traverse(const tinygltf::Model& model, const std::string& fi
 
 void convertNodes(const tinygltf::Model& model, const std::vector<std::vector<int>>& meshMap,
                   Scene& scene, const std::string& file) {
+  readAmbient(model, scene);
   const std::vector<Placed> order = traverse(model, file);
   for (const Placed& p : order) {
     const tinygltf::Node& node = model.nodes[static_cast<size_t>(p.node)];

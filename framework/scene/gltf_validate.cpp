@@ -1,6 +1,8 @@
 // glTF validation: tinygltf 2.7 parses but does not check accessor bounds, index and texture
 // references or the node hierarchy, so everything rtlab later dereferences is checked here.
 #include "scene/gltf_internal.h"
+#include "scene/scene_params.h"
+#include "util/number_format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -183,7 +185,7 @@ private:
     const auto& v = extras.Get(key);
     double x = v.IsNumber() ? v.GetNumberAsDouble() : -1.0;
     if (!v.IsNumber() || !std::isfinite(x) || x < 0.0 || x > max)
-      bad(who + " extras." + key + " must be a number in [0, " + std::to_string(max) + "]");
+      bad(who + " extras." + key + " must be a number in [0, " + formatNumber(max) + "]");
   }
 
   void light(size_t i) const {
@@ -289,6 +291,17 @@ private:
   void scenes() const {
     ref(m.defaultScene, m.scenes.size(), "the default scene", "scene");
     for (size_t s = 0; s < m.scenes.size(); ++s) {
+      const auto& extras = m.scenes[s].extras;
+      if (extras.IsObject() && extras.Has("ambient")) {
+        const auto& a = extras.Get("ambient");
+        bool ok = a.IsArray() && a.ArrayLen() == 3;
+        for (int k = 0; ok && k < 3; ++k) {
+          const double x = a.Get(k).IsNumber() ? a.Get(k).GetNumberAsDouble() : -1.0;
+          ok = std::isfinite(x) && x >= 0.0 && x <= kMaxAmbient;
+        }
+        if (!ok)
+          bad("scene " + str(s) + " extras.ambient must be 3 numbers in [0, " + formatNumber(kMaxAmbient) + "]");
+      }
       std::set<int> seen;
       for (int r : m.scenes[s].nodes) {
         ref(r, m.nodes.size(), "scene " + str(s), "node", true);

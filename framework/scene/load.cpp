@@ -3,6 +3,7 @@
 
 #include "scene/builtin.h"
 #include "scene/gltf_loader.h"
+#include "util/error.h"
 
 #include <algorithm>
 #include <cctype>
@@ -29,6 +30,12 @@ bool isExistingFile(const std::string& spec) {
 } // namespace
 
 Scene loadScene(const std::string& spec) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(spec, ec);
+  if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    inputError("cannot read scene '" + spec + "': " +
+               (std::filesystem::is_directory(status) ? "it is a directory" : "it is not a regular file") +
+               " (give a .gltf/.glb file or a built-in scene name)");
   if (isExistingFile(spec) || endsWithNoCase(spec, ".gltf") || endsWithNoCase(spec, ".glb")) {
     return loadGltf(spec); // missing or invalid: Error(Input)
   }

@@ -41,6 +41,9 @@ std::vector<ParamSpec> sceneParamSpecs(const Scene& scene) {
   std::vector<ParamSpec> specs;
   const auto add = [&](ParamSpec spec) { specs.push_back(widenToDefault(spec)); };
   const double sceneSize = std::max(1.0, double(scene.worldBounds().radius()));
+  add(ParamSpec::color("scene.ambient", "Ambient", scene.ambient, 0.0, kMaxAmbient)
+          .withUnit("radiance")
+          .withHelp("Constant ambient radiance (linear RGB); the frame adds ambient x diffuse albedo x AO"));
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& l = scene.lights[i];
     const std::string p = lightPrefix(i);
@@ -80,6 +83,7 @@ std::vector<ParamSpec> sceneParamSpecs(const Scene& scene) {
 }
 
 void applySceneParams(const ParamSet& params, Scene& scene) {
+  scene.ambient = params.getVec3("scene.ambient");
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     Light& l = scene.lights[i];
     const std::string p = lightPrefix(i);

@@ -1,6 +1,7 @@
 #include "viewer/json_fields.h"
 
 #include "util/error.h"
+#include "util/number_format.h"
 
 #include <algorithm>
 #include <charconv>
@@ -190,11 +191,7 @@ double jsonNumberFromFloat(float value) {
   return out;
 }
 
-std::string shortestDecimal(double value) {
-  char buf[64];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof(buf), value);
-  return ec == std::errc() ? std::string(buf, end) : std::to_string(value);
-}
+std::string shortestDecimal(double value) { return formatNumber(value); }
 
 nlohmann::json jsonFromVec3(const glm::vec3& v) {
   return nlohmann::json::array({jsonNumberFromFloat(v.x), jsonNumberFromFloat(v.y), jsonNumberFromFloat(v.z)});

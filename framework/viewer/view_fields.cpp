@@ -3,6 +3,7 @@
 #include "frame/aovs.h"
 #include "frame/registry.h"
 #include "util/error.h"
+#include "util/suggest.h"
 #include "viewer/json_fields.h"
 
 namespace rtlab {
@@ -29,7 +30,7 @@ void checkViewAov(const std::string& aov, const TechniqueRegistry& registry) {
   for (const auto& e : registry.entries())
     for (const auto& v : e.info.debugViews)
       if (v.name == aov) return;
-  usageError("unknown AOV '" + aov + "' (see 'rtlab list')");
+  usageError("unknown AOV '" + aov + "'" + didYouMean(aov, knownAovNames(registry), " (see 'rtlab list')"));
 }
 
 const std::vector<std::string>& viewerSectionNames() {

@@ -15,7 +15,7 @@ namespace rtlab {
 namespace {
 
 bool isSceneKey(const std::string& key) {
-  return key.rfind("light", 0) == 0 || key.rfind("camera.", 0) == 0;
+  return key.rfind("light", 0) == 0 || key.rfind("camera.", 0) == 0 || key.rfind("scene.", 0) == 0;
 }
 
 void applyScene(ViewerState& state) {

@@ -200,6 +200,18 @@ TEST(SceneGltf, NoLightsNoCameraGetDefaults) {
   EXPECT_GT(s.camera.znear, 0.0f);
 }
 
+TEST(SceneGltf, AmbientFromTheDefaultScenesExtras) {
+  // docs/scene-format.md: scenes[scene].extras.ambient, RGB radiance; without it the default.
+  GltfWriter w;
+  int mesh = w.addQuadMesh("quad", true, false);
+  w.setScene({w.addNode({{"mesh", mesh}})});
+  const Scene plain = loadGltf(w.write(test::sceneTmpDir("valid"), "no_ambient", GltfWriter::Mode::Embedded));
+  expectVec(plain.ambient, Scene{}.ambient);
+  w.doc["scenes"][0]["extras"] = {{"ambient", {0.25, 0.5, 0.125}}};
+  const Scene lit = loadGltf(w.write(test::sceneTmpDir("valid"), "ambient", GltfWriter::Mode::Embedded));
+  expectVec(lit.ambient, {0.25f, 0.5f, 0.125f});
+}
+
 TEST(SceneGltf, StripsFansMatricesAndSkippedLines) {
   GltfWriter w;
   int pos = w.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}, "VEC3", 3);

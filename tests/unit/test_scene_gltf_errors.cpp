@@ -197,6 +197,9 @@ TEST(SceneGltfErrors, LightsAndExtras) {
                      w.doc["nodes"][0]["extras"] = {{"rtlab_area_light", {{"width", -1}, {"height", 1}}}};
                    }),
                    "rtlab_area_light.width");
+  for (const Json& bad : {Json("bright"), Json({0.1, 0.1}), Json({0.1, -0.1, 0.1}), Json({0.1, 0.1, 1000.0})})
+    expectInputError(quadFile("ambient", [&](GltfWriter& w) { w.doc["scenes"][0]["extras"] = {{"ambient", bad}}; }),
+                     "extras.ambient must be 3 numbers in [0, 100]");
 }
 
 TEST(SceneGltfErrors, NoTriangles) {

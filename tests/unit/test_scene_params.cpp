@@ -284,3 +284,19 @@ TEST(SceneParamKeys, EveryBuiltinSceneDeclaresAndRoundTrips) {
     }
   }
 }
+
+TEST(SceneParamKeys, AmbientIsAColorKeyAppliedToTheScene) {
+  // CONTRACT.md: scene.ambient, the constant ambient radiance (RGB), default from the scene.
+  Scene s = handScene();
+  s.ambient = glm::vec3(0.2f, 0.3f, 0.4f);
+  ParamSet set = sceneSet(s);
+  ASSERT_TRUE(set.has("scene.ambient"));
+  EXPECT_EQ(set.spec("scene.ambient").type, ParamType::Color);
+  expectNear(set.getVec3("scene.ambient"), {0.2f, 0.3f, 0.4f});
+  set.setAssignment("scene.ambient=0.5,0.25,1");
+  applySceneParams(set, s);
+  expectNear(s.ambient, {0.5f, 0.25f, 1.0f});
+  EXPECT_RTLAB_ERROR(set.setAssignment("scene.ambient=-0.1,0,0"), ExitCode::Usage, "'scene.ambient'", "[0, 100]");
+  EXPECT_RTLAB_ERROR(set.setAssignment("scene.ambient=0.5"), ExitCode::Usage, "'scene.ambient'", "x,y,z");
+  EXPECT_RTLAB_ERROR(set.setAssignment("scene.ambient=1,1,101"), ExitCode::Usage, "'scene.ambient'");
+}
