@@ -1,5 +1,5 @@
 // How `rtlab render` writes an AOV (docs/cli.md "PNG previews of data"): EXR/PFM hold the raw
-// data; a PNG of a data or debug AOV is a preview, by CONTRACT.md's encoding unless --range or
+// data; a PNG of a data or debug AOV is a preview, by docs/contract.md's encoding unless --range or
 // --false-color say otherwise, or a debug view's values leave [0, 1] (then auto-ranged).
 #pragma once
 #include "app/args.h"

@@ -1,4 +1,4 @@
-// rtlab compare A B [--json]: error metrics of B against A over their valid pixels (CONTRACT.md
+// rtlab compare A B [--json]: error metrics of B against A over their valid pixels (docs/contract.md
 // "compare --json", docs/metrics.md). Exits 0 whatever the difference; 3 when an input is missing,
 // unreadable, invalid or of another size than the other; 2 for usage errors.
 #include "app/args.h"
@@ -66,7 +66,7 @@ double writeHeatmap(const std::string& path, const Image& a, const Image& b, con
 
 int runCompare(int argc, char** argv) {
   const std::vector<OptionSpec> specs = {
-      {"--json", "", false, "", "machine-readable output (CONTRACT.md schema)"},
+      {"--json", "", false, "", "machine-readable output (docs/contract.md schema)"},
       {"--heatmap", "", true, "OUT.png", "write |B - A| per pixel as a heat map (magma, 0 .. --heatmap-max)"},
       {"--heatmap-max", "", true, "E", "the heat map's top: error E and above is brightest (default: max_abs)"},
   };

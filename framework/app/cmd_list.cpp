@@ -1,5 +1,5 @@
 // rtlab list: stages, techniques with their parameters and debug views, scenes, AOVs; with
-// --scene also the scene's light and camera parameters. --json gives CONTRACT.md's schema.
+// --scene also the scene's light and camera parameters. --json gives docs/contract.md's schema.
 #include "app/args.h"
 #include "app/commands.h"
 #include "frame/aovs.h"
@@ -30,7 +30,7 @@ void printParams(const std::vector<ParamSpec>& params, const char* indent) {
 
 int runList(int argc, char** argv) {
   const std::vector<OptionSpec> specs = {
-      {"--json", "", false, "", "machine-readable output (CONTRACT.md schema)"},
+      {"--json", "", false, "", "machine-readable output (docs/contract.md schema)"},
       {"--scene", "", true, "S", "also list this scene's light and camera parameters"},
   };
   Args args("list", specs, argc, argv, 2);

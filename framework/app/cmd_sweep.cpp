@@ -1,5 +1,5 @@
 // rtlab sweep: error against time over a grid of parameter values, for one or more techniques of
-// one stage (CONTRACT.md, docs/sweeps.md). Planning validates everything and writes
+// one stage (docs/contract.md, docs/sweeps.md). Planning validates everything and writes
 // DIR/sweep.json and DIR/jobs.txt; every reference and point is then rendered by a job, a child
 // process `rtlab sweep --run-reference|--run-point DIR K` (N at a time with --jobs N, or
 // elsewhere from --emit-jobs FILE), and --collect merges the finished points into

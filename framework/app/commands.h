@@ -1,4 +1,4 @@
-// The rtlab commands (CONTRACT.md "Commands"). Each returns the process exit code or throws Error.
+// The rtlab commands (docs/contract.md "Commands"). Each returns the process exit code or throws Error.
 #pragma once
 
 namespace rtlab {

@@ -1,4 +1,4 @@
-// Scene and frame options shared by render, reference, sweep and view (CONTRACT.md), and their
+// Scene and frame options shared by render, reference, sweep and view (docs/contract.md), and their
 // resolution into a scene, a parameter set and the active techniques. Value sources apply in
 // order: defaults < --preset < -t < --set.
 #pragma once

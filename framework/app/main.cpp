@@ -1,5 +1,5 @@
 // rtlab: the command-line entry point. Every failure is one line on stderr beginning
-// "rtlab: error:" and a documented exit code (CONTRACT.md "Exit codes").
+// "rtlab: error:" and a documented exit code (docs/contract.md "Exit codes").
 #include "app/commands.h"
 #include "util/atomic_file.h"
 #include "util/error.h"

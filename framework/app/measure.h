@@ -1,5 +1,5 @@
 // Renders a resolved frame the way every command measures it: 2 warm-up frames when more than
-// one frame is measured (CONTRACT.md --frames), GL errors counted per frame, resources recorded.
+// one frame is measured (docs/contract.md --frames), GL errors counted per frame, resources recorded.
 #pragma once
 #include "app/frame_options.h"
 #include "frame/renderer.h"

@@ -11,7 +11,7 @@ namespace rtlab {
 
 class Context;
 
-// The --stats JSON of CONTRACT.md.
+// The --stats JSON of docs/contract.md.
 nlohmann::ordered_json statsJson(const ResolvedFrame& frame, const Context& context, TimingMethod timing,
                                  const FrameStats& stats);
 

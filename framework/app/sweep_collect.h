@@ -1,5 +1,5 @@
 // `rtlab sweep --collect DIR`: merges the finished points of a sweep into DIR/results.csv
-// (CONTRACT.md columns) and DIR/report.html, and writes each point's error heat map.
+// (docs/contract.md columns) and DIR/report.html, and writes each point's error heat map.
 #pragma once
 #include "app/sweep_plan.h"
 #include "app/sweep_report.h"

@@ -1,4 +1,4 @@
-// The rule for planning a sweep into a folder (CONTRACT.md, docs/sweeps.md "The folder"): a new
+// The rule for planning a sweep into a folder (docs/contract.md, docs/sweeps.md "The folder"): a new
 // or empty folder is used as it is; a folder that holds a sweep (nothing but a sweep's own
 // entries) is refused unless --force, which removes those entries first; a folder that holds
 // anything else is refused, --force or not, so that --force never deletes what is not a sweep's.

@@ -18,7 +18,7 @@ std::vector<std::string> knownAovNames(const TechniqueRegistry& registry);
 // Channels of a known AOV (1 or 3); Error(Internal) if unknown.
 int aovChannels(const std::string& aov, const TechniqueRegistry& registry);
 
-// How an AOV is written to PNG (CONTRACT.md): color sRGB, normal n*0.5+0.5, depth normalized
+// How an AOV is written to PNG (docs/contract.md): color sRGB, normal n*0.5+0.5, depth normalized
 // to the visible range, everything else linear in [0,1].
 PngEncoding pngEncodingForAov(const std::string& aov);
 

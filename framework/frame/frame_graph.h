@@ -1,4 +1,4 @@
-// The per-frame pass graph (DESIGN.md "The frame"; Falcor's reflect() and Filament's addPass are
+// The per-frame pass graph (docs/architecture.md "The frame graph"; Falcor's reflect() and Filament's addPass are
 // the models). Every frame the renderer and the active techniques add passes; each pass declares
 // the resources it reads and writes in `setup`, and does its GL work in `execute`. compile() keeps
 // only the passes that feed a requested output, allocates their textures from the pool (reusing

@@ -1,5 +1,5 @@
-// One timing mechanism for every pass, headless or in the viewer (DESIGN.md "Ground truth and
-// metrics"): GL timer queries on a hardware GPU; on Mesa's software rasterizers, where timer
+// One timing mechanism for every pass, headless or in the viewer (docs/architecture.md
+// "Timing"): GL timer queries on a hardware GPU; on Mesa's software rasterizers, where timer
 // queries do not measure the rasterization, each pass is bracketed by glFinish and timed on the
 // CPU clock.
 #pragma once

@@ -1,6 +1,6 @@
 // Which techniques are active: at most one per exclusive stage, any number in a stack stage.
 // `-t A,B` activates in order; a later technique in the same exclusive stage replaces the earlier;
-// `none` deactivates everything (CONTRACT.md).
+// `none` deactivates everything (docs/contract.md).
 #pragma once
 #include <string>
 #include <vector>

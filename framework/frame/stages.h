@@ -1,4 +1,4 @@
-// The frame's fixed recipe of stages (DESIGN.md "The frame") and the parameters the frame itself
+// The frame's fixed recipe of stages (docs/architecture.md "Stages and slots") and the parameters the frame itself
 // owns: stage parameters (shadow.*, ao.radius) and tone mapping (tonemap.*).
 #pragma once
 #include "params/param_spec.h"
@@ -19,7 +19,7 @@ const std::vector<StageInfo>& stages();
 const StageInfo* findStage(const std::string& id);
 std::vector<ParamSpec> tonemapParams();
 
-// AOVs every frame can output (CONTRACT.md): color, visibility, ao, indirect, depth, normal, albedo.
+// AOVs every frame can output (docs/contract.md): color, visibility, ao, indirect, depth, normal, albedo.
 struct AovInfo {
   std::string name;
   int channels;

@@ -1,5 +1,5 @@
 // Per-pass timings over the measured frames and the resources of the last frame, written as the
-// --stats JSON of CONTRACT.md.
+// --stats JSON of docs/contract.md.
 #pragma once
 #include "frame/pass_timer.h"
 

@@ -1,5 +1,6 @@
-// A technique plug-in (DESIGN.md): one stage, its parameters declared once, the passes it adds to
-// the frame with their declared reads and writes, and its debug views.
+// A technique plug-in (docs/architecture.md "Techniques and the registry"): one stage, its
+// parameters declared once, the passes it adds to the frame with their declared reads and writes,
+// and its debug views.
 #pragma once
 #include "params/param_spec.h"
 

@@ -33,7 +33,7 @@ struct ValueRange {
 };
 ValueRange validRange(const Image& image);
 
-// How a PNG encodes an image (CONTRACT.md "Images and AOVs").
+// How a PNG encodes an image (docs/contract.md "Images and AOVs").
 enum class PngEncoding {
   Linear01,   // clamp to [0,1], linear (visibility, ao, albedo)
   Srgb,       // clamp to [0,1], sRGB transfer (already tone-mapped color)

@@ -1,5 +1,5 @@
 // Error metrics over valid pixels (metrics.h, docs/metrics.md): the pair preparation (sizes,
-// channels, mask, NaN/Inf), RMSE, PSNR with peak 1, max_abs, and the JSON of CONTRACT.md.
+// channels, mask, NaN/Inf), RMSE, PSNR with peak 1, max_abs, and the JSON of docs/contract.md.
 // SSIM lives in ssim.cpp, FLIP in flip.cpp, the heat-map colours in heatmap.cpp.
 #include "image/metrics.h"
 #include "image/metrics_internal.h"

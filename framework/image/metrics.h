@@ -1,5 +1,5 @@
-// Error metrics between two images over their valid pixels (DESIGN.md "Ground truth and
-// metrics", CONTRACT.md compare --json): RMSE, PSNR (peak 1), SSIM (Wang et al. 2004: 11x11
+// Error metrics between two images over their valid pixels (docs/contract.md
+// "compare --json"): RMSE, PSNR (peak 1), SSIM (Wang et al. 2004: 11x11
 // Gaussian window, sigma 1.5, on luminance), FLIP (Andersson et al. 2020, LDR), max_abs, and the
 // count of NaN/Inf pixels, which never poison the other figures. docs/metrics.md explains each.
 #pragma once

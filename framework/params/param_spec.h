@@ -1,4 +1,4 @@
-// The single declaration of a parameter (DESIGN.md "Parameters"). From one ParamSpec come the UI
+// The single declaration of a parameter (docs/architecture.md "Parameters"). From one ParamSpec come the UI
 // slider, `--set key=value`, JSON presets, `rtlab list --json`, sweep axes and the extremes tests.
 #pragma once
 #include <glm/glm.hpp>
@@ -59,7 +59,7 @@ struct ParamSpec {
 
 const char* paramTypeName(ParamType type);
 
-// Parses text by the spec's type (CONTRACT.md "Keys and values"): decimal floats/ints, bool
+// Parses text by the spec's type (docs/contract.md "Keys and values"): decimal floats/ints, bool
 // true|false|1|0|on|off, enum by name, vec3/color as x,y,z. Checks the range. Throws Error(Usage)
 // naming the key and its range/choices.
 ParamValue parseParamValue(const ParamSpec& spec, const std::string& text);
@@ -70,7 +70,7 @@ void checkParamRange(const ParamSpec& spec, const ParamValue& value);
 
 std::string formatParamValue(const ParamSpec& spec, const ParamValue& value); // CLI syntax
 nlohmann::json paramValueToJson(const ParamSpec& spec, const ParamValue& value);
-// P of CONTRACT.md: key, type, default, min, max, scale, unit, choices (enums), help.
+// P of docs/contract.md: key, type, default, min, max, scale, unit, choices (enums), help.
 nlohmann::ordered_json paramSpecToJson(const ParamSpec& spec);
 std::string describeRange(const ParamSpec& spec); // "[0, 0.05]" or "one of: a, b"
 

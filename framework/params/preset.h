@@ -1,4 +1,4 @@
-// Preset files (CONTRACT.md): {"schema": 1, "scene": "...", "techniques": ["pcss", ...],
+// Preset files (docs/contract.md): {"schema": 1, "scene": "...", "techniques": ["pcss", ...],
 // "params": {"KEY": value}}. All fields optional.
 #pragma once
 #include <nlohmann/json.hpp>

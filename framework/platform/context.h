@@ -1,5 +1,6 @@
-// One GL context interface, three implementations chosen at run time (DESIGN.md "Layout"):
-// EGL (surfaceless platform, then device platform), OSMesa, and a GLFW window. Creating a context
+// One GL context interface, three implementations chosen at run time (docs/architecture.md
+// "Contexts and the GL loader"): EGL (surfaceless platform, then device platform), OSMesa, and a
+// GLFW window. Creating a context
 // makes it current, loads the GL 4.5 core entry points through glad with that context's
 // getProcAddress (rtlab never links libGL/libOpenGL), checks the version, and installs KHR_debug.
 #pragma once

@@ -1,7 +1,7 @@
 // Lights as the reference sees them: the GPU's irradiance model (shaders/common/lights.glsl,
 // lightIrradiance: glTF units, range window, spot cone, a rectangle as a point at its centre with
-// intensity radiance * area * cos) and the light's shape for visibility (DESIGN.md "Ground
-// truth and metrics": a cone of directions, a disk facing the point, a rectangle's area).
+// intensity radiance * area * cos) and the light's shape for visibility (docs/measuring.md
+// "visibility": a cone of directions, a disk facing the point, a rectangle's area).
 #pragma once
 #include "scene/scene.h"
 

@@ -1,4 +1,4 @@
-// The CPU reference (DESIGN.md "Ground truth and metrics", docs/measuring.md): Embree 3 ray
+// The CPU reference (docs/measuring.md): Embree 3 ray
 // casting over the scene's opaque triangles, from the frame's own surface points, in parallel
 // over 16x16 tiles with TBB: one batch of every tile (reference_batch.h). Every pixel's samples
 // come from a pattern keyed by (seed, pixel), so the image does not depend on how tiles are

@@ -1,6 +1,6 @@
 // Ground truth on the CPU (Embree 3 + TBB) for the stage outputs, computed from the frame's own
 // surface points over the same triangles the GPU draws (opaque instances; transparent surfaces
-// neither receive nor cast in the data AOVs). DESIGN.md "Ground truth and metrics".
+// neither receive nor cast in the data AOVs). docs/measuring.md "Where the rays start".
 #pragma once
 #include "image/image.h"
 #include "reference/surfaces.h"
@@ -36,7 +36,7 @@ Image renderReference(const Scene& scene, const SurfaceData& surfaces, const std
 Image renderReference(const Scene& scene, const SurfaceData& surfaces, const std::string& aov,
                       const ReferenceOptions& options, ReferenceStats& stats);
 
-// The AOVs the reference computes, and its sample-count range (CONTRACT.md `rtlab reference`).
+// The AOVs the reference computes, and its sample-count range (docs/contract.md `rtlab reference`).
 bool isReferenceAov(const std::string& aov);
 constexpr int kReferenceMinSpp = 1, kReferenceMaxSpp = 65536;
 

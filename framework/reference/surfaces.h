@@ -1,5 +1,5 @@
 // The camera-visible surface points of one frame, read back from the G-buffer, so that the
-// reference starts from exactly the points the GPU shaded (DESIGN.md "Ground truth and metrics"):
+// reference starts from exactly the points the GPU shaded (docs/measuring.md "Where the rays start"):
 // primary visibility is identical and only the approximation differs.
 #pragma once
 #include <glm/glm.hpp>

@@ -1,4 +1,4 @@
-// Built-in procedural scenes, each made to show specific techniques (DESIGN.md "Scenes").
+// Built-in procedural scenes, each made to show specific techniques (docs/scene-format.md "Built-in scenes").
 #pragma once
 #include "scene/scene.h"
 

@@ -1,4 +1,4 @@
-// `--scene S` resolution (CONTRACT.md): file or built-in name.
+// `--scene S` resolution (docs/contract.md): file or built-in name.
 #include "scene/load.h"
 
 #include "scene/builtin.h"

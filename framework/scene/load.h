@@ -1,4 +1,4 @@
-// `--scene S` resolution (CONTRACT.md): an existing file, or a name ending in .gltf/.glb, is a file
+// `--scene S` resolution (docs/contract.md): an existing file, or a name ending in .gltf/.glb, is a file
 // (missing or invalid: exit 3); otherwise a built-in scene name (unknown: exit 2).
 #pragma once
 #include "scene/scene.h"

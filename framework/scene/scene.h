@@ -77,7 +77,7 @@ struct Instance {
 
 enum class LightType { Directional, Point, Spot, Rect };
 
-// Lights are numbered as CONTRACT.md says: KHR_lights_punctual in depth-first node order, then
+// Lights are numbered as docs/contract.md says: KHR_lights_punctual in depth-first node order, then
 // area lights from extras, then the default light when the file has none.
 struct Light {
   std::string name;

@@ -1,4 +1,4 @@
-// The scene's own parameters (CONTRACT.md "Keys and values"): scene.ambient, light<N>.* for each
+// The scene's own parameters (docs/contract.md "Keys and values"): scene.ambient, light<N>.* for each
 // light, only the keys that apply to its type, and camera.position/target/fov. Defaults come from
 // the scene.
 #pragma once

@@ -1,6 +1,7 @@
-// The shadow stage's light-space depth map of light 0 (DESIGN.md: owned by the stage, shared by
-// every depth-comparison technique). Resource "shadow.depth": a 2D depth texture, or a cube map
-// for point lights and wide spots, with hardware depth comparison enabled.
+// The shadow stage's light-space depth map of light 0 (owned by the stage, shared by every
+// depth-comparison technique: docs/architecture.md "Stages and slots"). Resource "shadow.depth":
+// a 2D depth texture, or a cube map for point lights and wide spots, with hardware depth
+// comparison enabled.
 #pragma once
 #include "shading/light_space.h"
 

@@ -1,4 +1,4 @@
-// One ImGui control per parameter, drawn from its ParamSpec alone (DESIGN.md "Parameters"): a
+// One ImGui control per parameter, drawn from its ParamSpec alone (docs/architecture.md "Parameters"): a
 // slider for float and int (logarithmic where the spec says so, the unit in the format), a
 // checkbox for bool, a combo for enums, three fields for vec3 and a color editor for colors; a
 // "(?)" marker with the help text and the range; a reset button when the value is not the default.

@@ -1,5 +1,5 @@
 // Output files are written to a temporary name beside the target and renamed into place, so a
-// failed or interrupted run leaves no partial file (CONTRACT.md).
+// failed or interrupted run leaves no partial file (docs/contract.md).
 #pragma once
 #include <functional>
 #include <string>

@@ -1,4 +1,4 @@
-// Errors that reach the user: one line, one exit code (CONTRACT.md "Exit codes").
+// Errors that reach the user: one line, one exit code (docs/contract.md "Exit codes").
 #pragma once
 #include <stdexcept>
 #include <string>

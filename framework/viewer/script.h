@@ -1,4 +1,4 @@
-// Scripted viewer runs (`rtlab view --script FILE`, CONTRACT.md): a JSON list of actions, parsed
+// Scripted viewer runs (`rtlab view --script FILE`, docs/contract.md): a JSON list of actions, parsed
 // and validated before the window opens, so that a bad script exits 3 (unreadable or invalid
 // JSON, an unknown action or field) or 2 (an unknown technique, key or out-of-range value) with
 // a one-line message naming the action's index, and never half-runs. GL-free, unit-tested.

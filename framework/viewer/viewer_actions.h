@@ -43,7 +43,7 @@ void sectionAction(ViewerState& state, const std::string& name, bool open);
 // exactly `to` at the last step.
 double rampValue(double from, double to, long step, long frames);
 void renderScaleAction(ViewerState& state, double scale); // Error(Usage) outside [0.1, 1]
-// Presets in the `--preset` format (CONTRACT.md); loading keeps the current scene.
+// Presets in the `--preset` format (docs/contract.md); loading keeps the current scene.
 void savePresetAction(const ViewerState& state, const std::string& path);
 void loadPresetAction(ViewerState& state, const std::string& path);
 // Applies bookmark `index` (Error(Usage) if out of range).

@@ -1,5 +1,5 @@
 #version 450 core
-// Writes one AOV as RGBA32F: rgb the value (CONTRACT.md "Images and AOVs"), a the surface mask.
+// Writes one AOV as RGBA32F: rgb the value (docs/contract.md "Images and AOVs"), a the surface mask.
 // Background pixels hold 0 in every data AOV. AOV_* selects which one (set as a define).
 in vec2 vUv;
 uniform sampler2D uPosition;

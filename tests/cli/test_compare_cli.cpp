@@ -1,4 +1,4 @@
-// rtlab compare through the real binary (CONTRACT.md "compare --json", "Exit codes"): exit 0
+// rtlab compare through the real binary (docs/contract.md "compare --json", "Exit codes"): exit 0
 // whatever the difference, the --json keys, psnr null for identical files, the mask from EXR
 // alpha, and one-line errors with exit 3 (missing, invalid, different sizes) or 2 (usage).
 #include "process.h"

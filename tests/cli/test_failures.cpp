@@ -1,6 +1,6 @@
 // Failures that need the environment changed: a shader that does not compile (exit 5, the message
 // names the original file and line through #include), no GL context (exit 4), and render
-// outputs of a successful run (stats JSON per CONTRACT.md, a saved preset that round-trips).
+// outputs of a successful run (stats JSON per docs/contract.md, a saved preset that round-trips).
 #include "process.h"
 
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-// rtlab reference through the binary (CONTRACT.md): images with the background masked, exit codes
+// rtlab reference through the binary (docs/contract.md): images with the background masked, exit codes
 // for bad input, determinism for a seed, and Ctrl-C leaving no file.
 #include "image/image.h"
 #include "process.h"

@@ -1,4 +1,4 @@
-// params/param_spec + param_set: value syntax of every type (CONTRACT.md "Keys and values"), range
+// params/param_spec + param_set: value syntax of every type (docs/contract.md "Keys and values"), range
 // checks (never clamped), JSON values, unknown keys, declaration errors, revision, toJson, --set.
 #include "params/param_set.h"
 #include "params/param_spec.h"

@@ -366,7 +366,7 @@ TEST(Aov, DebugViewNeedsItsTechniqueActive) {
 }
 
 TEST(Aov, PngEncodingFollowsTheContract) {
-  // CONTRACT.md: color tone-mapped sRGB; normal n*0.5+0.5; depth normalized; the rest linear.
+  // docs/contract.md: color tone-mapped sRGB; normal n*0.5+0.5; depth normalized; the rest linear.
   EXPECT_EQ(pngEncodingForAov("color"), PngEncoding::Srgb);
   EXPECT_EQ(pngEncodingForAov("normal"), PngEncoding::Normal);
   EXPECT_EQ(pngEncodingForAov("depth"), PngEncoding::NormalizeRange);

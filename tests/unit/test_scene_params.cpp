@@ -1,4 +1,4 @@
-// scene/scene_params: light<N>.* keys exist only where they apply (CONTRACT.md "Keys and values"),
+// scene/scene_params: light<N>.* keys exist only where they apply (docs/contract.md "Keys and values"),
 // defaults come from the scene, applySceneParams writes values back (directions normalized), and
 // degenerate directions / cameras are usage errors.
 #include "frame/param_catalog.h"
@@ -286,7 +286,7 @@ TEST(SceneParamKeys, EveryBuiltinSceneDeclaresAndRoundTrips) {
 }
 
 TEST(SceneParamKeys, AmbientIsAColorKeyAppliedToTheScene) {
-  // CONTRACT.md: scene.ambient, the constant ambient radiance (RGB), default from the scene.
+  // docs/contract.md: scene.ambient, the constant ambient radiance (RGB), default from the scene.
   Scene s = handScene();
   s.ambient = glm::vec3(0.2f, 0.3f, 0.4f);
   ParamSet set = sceneSet(s);

@@ -1,4 +1,4 @@
-// Hot reload of shaders (DESIGN.md "Style"): a few times a second the viewer asks the program
+// Hot reload of shaders (docs/viewer.md "Hot reload"): a few times a second the viewer asks the program
 // cache to rebuild every program whose files (the stage files and everything they #include)
 // changed on disk. A rebuild that fails keeps the last good program running and its file:line
 // messages are shown in the UI and reported (shader_errors) until a later save compiles.
