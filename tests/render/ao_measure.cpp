@@ -18,12 +18,7 @@ AoMeasurement measureAo(const std::string& scene, const std::string& technique, 
   m.glErrors = r.glErrors;
   m.ao = r.renderer->readAov("ao");
   if (spp <= 0) return m;
-  ResolvedFrame resolved;
-  resolved.options.width = size;
-  resolved.options.height = size;
-  resolved.scene = m.frame.scene;
-  resolved.params = m.frame.params;
-  resolved.techniques = m.frame.techniques;
+  const ResolvedFrame resolved = resolvedOf(m.frame);
   m.reference = renderReferenceFrame(*r.renderer, resolved, "ao", spp, false);
   m.metrics = computeMetrics(m.reference, m.ao);
   Image one = m.ao;

@@ -1,6 +1,7 @@
 // One headless GL context for the whole render-test binary (programs cost 0.1-0.4 s each to JIT
 // on llvmpipe, so they are shared through one Renderer per scene set-up where possible).
 #pragma once
+#include "app/frame_options.h"
 #include "frame/renderer.h"
 #include "params/param_set.h"
 #include "platform/context.h"
@@ -35,6 +36,10 @@ TestRender renderTestFrame(const TestFrame& frame, const std::vector<std::string
                            int frames = 1);
 
 // Renders with the shared renderer of the frame's scene name: the scene is uploaded once per name.
+// The frame as the command line would resolve it (size, scene, parameters, techniques), for the
+// reference renderer (renderReferenceFrame, referenceInput).
+ResolvedFrame resolvedOf(const TestFrame& frame);
+
 // Destroys the shared renderers (before the context goes).
 void releaseTestRenderers();
 

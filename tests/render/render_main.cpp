@@ -21,6 +21,16 @@ std::unique_ptr<Context> g_context;
 std::map<std::string, std::unique_ptr<Renderer>> g_renderers;
 } // namespace
 
+ResolvedFrame resolvedOf(const TestFrame& frame) {
+  ResolvedFrame resolved;
+  resolved.options.width = frame.width;
+  resolved.options.height = frame.height;
+  resolved.scene = frame.scene;
+  resolved.params = frame.params;
+  resolved.techniques = frame.techniques;
+  return resolved;
+}
+
 void releaseTestRenderers() { g_renderers.clear(); }
 
 Context& testContext() { return *g_context; }

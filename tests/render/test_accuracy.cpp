@@ -30,12 +30,7 @@ Measured measure(const std::string& scene, const std::string& technique, const s
   TestRender r = renderTestFrame(f, {"visibility"});
   Measured m;
   m.visibility = r.renderer->readAov("visibility");
-  ResolvedFrame resolved;
-  resolved.options.width = kSize;
-  resolved.options.height = kSize;
-  resolved.scene = f.scene;
-  resolved.params = f.params;
-  resolved.techniques = f.techniques;
+  const ResolvedFrame resolved = resolvedOf(f);
   m.reference = renderReferenceFrame(*r.renderer, resolved, "visibility", kSpp, false);
   m.metrics = computeMetrics(m.reference, m.visibility);
   std::printf("%-10s %-8s %-40s rmse %.4f\n", technique.c_str(), scene.c_str(),

@@ -26,12 +26,7 @@ TEST(ProgressiveReference, LiveRmseOfAFrameMatchesTheSinglePassCompare) {
   TestFrame f = makeTestFrame("contact", "shadow_map", {"light0.radius=0.3"}, kSize, kSize);
   TestRender r = renderTestFrame(f, {"visibility"});
   const Image frame = r.renderer->readAov("visibility");
-  ResolvedFrame resolved;
-  resolved.options.width = kSize;
-  resolved.options.height = kSize;
-  resolved.scene = f.scene;
-  resolved.params = f.params;
-  resolved.techniques = f.techniques;
+  const ResolvedFrame resolved = resolvedOf(f);
   const double compareRmse =
       computeMetrics(renderReferenceFrame(*r.renderer, resolved, "visibility", 256, false), frame).rmse;
 

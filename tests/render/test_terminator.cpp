@@ -23,16 +23,6 @@ constexpr int kSpp = 64;
 // spheres (up to about 5 degrees), so the whole faceted staircase lies inside the band.
 constexpr float kBand = 0.1f;
 
-ResolvedFrame resolvedOf(const TestFrame& f) {
-  ResolvedFrame resolved;
-  resolved.options.width = f.width;
-  resolved.options.height = f.height;
-  resolved.scene = f.scene;
-  resolved.params = f.params;
-  resolved.techniques = f.techniques;
-  return resolved;
-}
-
 // Per pixel of the sphere (the mesh named "sphere"): the cosine between the exact sphere's normal
 // at the G-buffer point and the direction toward light 0's centre; NaN elsewhere.
 std::vector<float> sphereCosines(const ReferenceInput& in) {

@@ -36,12 +36,7 @@ TEST_P(UmbraSpeckleShare, MomentShadowsLeaveNoLitPixelsInTheUmbra) {
     const Image visibility = r.renderer->readAov("visibility"); // before the reference re-renders
     if (reference.pixels.empty()) {
       // The reference does not depend on the active technique: one per scene.
-      ResolvedFrame resolved;
-      resolved.options.width = kWidth;
-      resolved.options.height = kHeight;
-      resolved.scene = f.scene;
-      resolved.params = f.params;
-      resolved.techniques = f.techniques;
+      const ResolvedFrame resolved = resolvedOf(f);
       reference = renderReferenceFrame(*r.renderer, resolved, "visibility", kSpp, false);
     }
     const UmbraSpeckles s = measureUmbraSpeckles(reference, visibility);
