@@ -5,8 +5,8 @@
 #include "app/frame_options.h"
 #include "app/measure.h"
 #include "frame/registry.h"
-#include "frame/renderer.h"
 #include "gl/program_cache.h"
+#include "render/renderer.h"
 #include "shading/gpu_common.h"
 #include "util/error.h"
 

@@ -5,11 +5,11 @@
 
 #include "app/reference_run.h"
 #include "frame/registry.h"
-#include "frame/renderer.h"
 #include "image/metrics.h"
 #include "platform/context.h"
 #include "reference/live_metrics.h"
 #include "reference/progressive_reference.h"
+#include "render/renderer.h"
 #include "util/error.h"
 
 #include <tbb/info.h>

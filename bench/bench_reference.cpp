@@ -12,9 +12,9 @@
 #include "app/frame_options.h"
 #include "app/reference_run.h"
 #include "frame/registry.h"
-#include "frame/renderer.h"
 #include "platform/context.h"
 #include "reference/reference.h"
+#include "render/renderer.h"
 #include "scene/scene_params.h"
 #include "util/error.h"
 

@@ -21,12 +21,12 @@
 #include "app/measure.h"
 #include "frame/param_catalog.h"
 #include "frame/registry.h"
-#include "frame/renderer.h"
 #include "image/image.h"
+#include "render/renderer.h"
 #include "scene/mesh_builder.h"
 #include "scene/scene_params.h"
 #include "shading/base_passes.h"
-#include "shading/shadow_depth.h"
+#include "techniques/common/shadow/shadow_depth.h"
 #include "util/error.h"
 
 #include <glm/gtc/matrix_transform.hpp>

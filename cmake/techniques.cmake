@@ -2,16 +2,20 @@
 #   void registerTechnique_<id>(rtlab::TechniqueRegistry&);
 # This file generates one registry translation unit that calls them all, so registration survives
 # static linking and adding a technique needs no line anywhere else.
+# techniques/common/ is not a technique (the id "common" is reserved): it holds the code a family
+# of techniques shares, one folder per family (techniques/common/ao/, techniques/common/shadow/;
+# docs/layout.md). Every .cpp under it, at any depth, is compiled into the same library as the
+# techniques, and nothing there registers anything.
 file(GLOB _technique_dirs LIST_DIRECTORIES true CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/techniques/*)
 # Watch every technique source too, so a folder that gains its <id>.cpp later re-runs configure.
 file(GLOB _technique_watch CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/techniques/*/*.cpp)
-set(RTLAB_TECHNIQUE_SOURCES "")
+file(GLOB_RECURSE RTLAB_TECHNIQUE_SOURCES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/techniques/common/*.cpp)
 set(_decls "")
 set(_calls "")
 list(SORT _technique_dirs)
 foreach(_dir IN LISTS _technique_dirs)
-  if(IS_DIRECTORY ${_dir})
-    get_filename_component(_id ${_dir} NAME)
+  get_filename_component(_id ${_dir} NAME)
+  if(IS_DIRECTORY ${_dir} AND NOT _id STREQUAL "common")
     if(EXISTS ${_dir}/${_id}.cpp)
       file(GLOB _srcs CONFIGURE_DEPENDS ${_dir}/*.cpp)
       list(APPEND RTLAB_TECHNIQUE_SOURCES ${_srcs})

@@ -6,8 +6,8 @@
 #include "app/run_info.h"
 #include "frame/aovs.h"
 #include "frame/registry.h"
-#include "frame/renderer.h"
 #include "image/image.h"
+#include "render/renderer.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 

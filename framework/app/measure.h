@@ -2,8 +2,8 @@
 // one frame is measured (docs/contract.md --frames), GL errors counted per frame, resources recorded.
 #pragma once
 #include "app/frame_options.h"
-#include "frame/renderer.h"
 #include "frame/stats.h"
+#include "render/renderer.h"
 
 namespace rtlab {
 

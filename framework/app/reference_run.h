@@ -3,9 +3,9 @@
 // Shared by `rtlab reference` and `rtlab sweep`.
 #pragma once
 #include "app/frame_options.h"
-#include "frame/renderer.h"
 #include "image/image.h"
 #include "reference/reference.h"
+#include "render/renderer.h"
 
 #include <string>
 

@@ -1,5 +1,5 @@
 // The framework's own passes: G-buffer, deferred lighting, transparent surfaces, tone mapping and
-// AOV export. Techniques add theirs between them (frame/renderer.cpp fixes the order).
+// AOV export. Techniques add theirs between them (render/renderer.cpp fixes the order).
 #pragma once
 #include "gl/texture.h"
 

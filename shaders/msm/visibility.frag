@@ -4,8 +4,8 @@
 // a PCSS-style blocker estimate (the two-moment estimate of Yang et al. 2010 on the first two
 // moments, then similar triangles), so shadows harden at contacts; visibility is 1 minus the
 // 4MSM shadow intensity over that box. OUTPUT: 0 visibility, 1 blocker depth, 2 filter radius.
-#include "../common/shadow_space.glsl"
-#include "../common/moments.glsl"
+#include "../shadow/common/shadow_space.glsl"
+#include "../shadow/common/moments.glsl"
 
 in vec2 vUv;
 uniform sampler2D uPosition;

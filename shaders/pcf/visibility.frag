@@ -1,8 +1,8 @@
 #version 450 core
 // Percentage-closer filtering (Reeves, Salesin & Cook 1987): the fraction of light 0's depth
 // comparisons that pass over a kernel of uTapCount taps within uRadius texels of the receiver.
-#include "../common/shadow_space.glsl"
-#include "../common/shadow_filter.glsl"
+#include "../shadow/common/shadow_space.glsl"
+#include "../shadow/common/shadow_filter.glsl"
 
 in vec2 vUv;
 uniform sampler2D uPosition;

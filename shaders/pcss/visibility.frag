@@ -6,8 +6,8 @@
 // 3. PCF with that radius, clamped to [min, max] penumbra texels. No blocker: fully lit.
 // OUTPUT selects what is written: 0 visibility, 1 mean blocker depth (0 near .. 1 far plane,
 // 0 without blockers), 2 filter radius / max penumbra.
-#include "../common/shadow_space.glsl"
-#include "../common/shadow_filter.glsl"
+#include "../shadow/common/shadow_space.glsl"
+#include "../shadow/common/shadow_filter.glsl"
 
 in vec2 vUv;
 uniform sampler2D uPosition;

@@ -2,7 +2,7 @@
 // Shadow mapping (Williams 1978): light 0 is visible from a surface point when the point, moved
 // along its geometric normal by shadow.normal_bias texels and compared with shadow.constant_bias
 // subtracted, is no farther from the light than the nearest occluder stored in the map.
-#include "../common/shadow_space.glsl"
+#include "../shadow/common/shadow_space.glsl"
 
 in vec2 vUv;
 uniform sampler2D uPosition;

@@ -6,8 +6,8 @@
 // assumed at t, the blocker depth is z_occ = (mu - P t) / (1 - P). 2. Penumbra from similar
 // triangles (as PCSS). 3. Visibility = Chebyshev bound over the penumbra box, with light-bleeding
 // reduction. OUTPUT: 0 visibility, 1 blocker depth (0 = none), 2 filter radius / max penumbra.
-#include "../common/shadow_space.glsl"
-#include "../common/moments.glsl"
+#include "../shadow/common/shadow_space.glsl"
+#include "../shadow/common/moments.glsl"
 
 in vec2 vUv;
 uniform sampler2D uPosition;

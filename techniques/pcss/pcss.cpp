@@ -6,7 +6,7 @@
 #include "frame/frame_graph.h"
 #include "frame/registry.h"
 #include "params/param_set.h"
-#include "shading/shadow_pass.h"
+#include "techniques/common/shadow/shadow_pass.h"
 
 
 namespace rtlab {

@@ -5,7 +5,7 @@
 // (shadow.*), shared with every depth-comparison technique.
 #include "frame/frame_graph.h"
 #include "frame/registry.h"
-#include "shading/shadow_pass.h"
+#include "techniques/common/shadow/shadow_pass.h"
 
 namespace rtlab {
 namespace {

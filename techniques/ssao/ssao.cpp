@@ -6,7 +6,7 @@
 #include "frame/frame_graph.h"
 #include "frame/registry.h"
 #include "params/param_set.h"
-#include "shading/ao_pass.h"
+#include "techniques/common/ao/ao_pass.h"
 
 namespace rtlab {
 namespace {

@@ -5,8 +5,8 @@
 #include "frame/frame_graph.h"
 #include "frame/registry.h"
 #include "params/param_set.h"
-#include "shading/moment_map.h"
-#include "shading/shadow_pass.h"
+#include "techniques/common/shadow/moment_map.h"
+#include "techniques/common/shadow/shadow_pass.h"
 
 namespace rtlab {
 namespace {

@@ -2,9 +2,9 @@
 // on llvmpipe, so they are shared through one Renderer per scene set-up where possible).
 #pragma once
 #include "app/frame_options.h"
-#include "frame/renderer.h"
 #include "params/param_set.h"
 #include "platform/context.h"
+#include "render/renderer.h"
 #include "scene/scene.h"
 
 #include <string>

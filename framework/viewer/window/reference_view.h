@@ -6,9 +6,9 @@
 // computed as `rtlab compare` computes them (reference/live_metrics.h: from 16 spp on). A restart
 // after a camera or light change reuses the reference's BVH; a new scene builds it again.
 #pragma once
-#include "frame/renderer.h"
 #include "gl/texture.h"
 #include "reference/progressive_reference.h"
+#include "render/renderer.h"
 #include "viewer/viewer_state.h"
 
 #include <cstdint>

@@ -3,7 +3,7 @@
 // compare mode's reference and snapshot, and draws the picture (frame_display.h) into the window.
 #pragma once
 #include "frame/pass_timer.h"
-#include "frame/renderer.h"
+#include "render/renderer.h"
 #include "viewer/viewer_state.h"
 
 #include "viewer/window/frame_display.h"

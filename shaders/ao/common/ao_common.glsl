@@ -1,7 +1,7 @@
 // Shared by the ao estimators (ssao, hbao): the view-space surface buffer "ao.view" (xyz
 // view-space shading normal, w linear view depth, 0 on sky pixels) at the AO resolution, position
 // reconstruction and projection, the blue-noise rotation and the debug-view hook AO_VISIT.
-// framework/shading/ao_pass.cpp sets every uniform here.
+// techniques/common/ao/ao_pass.cpp sets every uniform here.
 #include "../../common/constants.glsl"
 
 uniform sampler2D uAoView;   // unit 0

@@ -1,6 +1,6 @@
 // Light-space lookups into the shadow stage's depth map ("shadow.depth"), shared by every
 // depth-comparison technique. Needs SHADOW_PROJECTION: 0 orthographic, 1 perspective, 2 cube.
-// Uniforms are set by bindShadowSpace() (framework/shading/shadow_depth.cpp).
+// Uniforms are set by bindShadowSpace() (techniques/common/shadow/shadow_depth.cpp).
 uniform mat4 uLightViewProj;
 uniform vec3 uLightPosition;
 uniform vec3 uLightDirection;

@@ -3,7 +3,7 @@
 // a 2D depth texture, or a cube map for point lights and wide spots, with hardware depth
 // comparison enabled.
 #pragma once
-#include "shading/light_space.h"
+#include "techniques/common/shadow/light_space.h"
 
 #include <string>
 
@@ -20,7 +20,7 @@ inline const std::string kShadowDepth = "shadow.depth";
 LightSpace shadowLightSpace(const Scene& scene, const ParamSet& params);
 // Adds the "shadow.depth" pass (once per frame; later calls do nothing).
 void addShadowDepthPass(FrameGraph& frame);
-// Sets the uniforms of shaders/common/shadow_space.glsl (light 0's size too) and binds the map
+// Sets the uniforms of shaders/shadow/common/shadow_space.glsl (light 0's size too) and binds the map
 // to `unit` (none when unit < 0).
 void bindShadowSpace(PassContext& ctx, gl::Program& program, int unit);
 // "SHADOW_PROJECTION <n>" define for shadow_space.glsl.

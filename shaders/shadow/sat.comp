@@ -5,7 +5,7 @@
 // round((moment - uOffset) * uScale). Unsigned sums wrap modulo 2^32, and so do the four-corner
 // differences of a lookup: a box's sum comes out exact whenever it fits in a signed 32-bit
 // integer, which uScale guarantees for every box a lookup makes (momentSatScale,
-// framework/shading/moment_map.cpp). A float table instead rounds its running sums, whose size
+// techniques/common/shadow/moment_map.cpp). A float table instead rounds its running sums, whose size
 // grows with the map, and a small box's mean then loses its low digits (techniques/vssm/README.md,
 // "Speckles"). FORMAT is the image format (rg32ui or rgba32ui).
 layout(local_size_x = 64) in;

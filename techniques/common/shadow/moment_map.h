@@ -29,7 +29,7 @@ float momentSatScale(const ParamSet& params, const MomentMapConfig& config);
 
 // Adds "<id>.moments" and "<id>.sat" passes (resources of the same names).
 void addMomentMapPasses(FrameGraph& frame, const MomentMapConfig& config);
-// Binds "<id>.sat" as uSat (and uSatOffset, uSatScale) at `unit` for shaders/common/moments.glsl.
+// Binds "<id>.sat" as uSat (and uSatOffset, uSatScale) at `unit` for shaders/shadow/common/moments.glsl.
 void bindMomentSat(PassContext& ctx, gl::Program& program, const MomentMapConfig& config, int unit);
 std::string momentSatResource(const std::string& technique);
 // Debug view "aov.<view>": the first channel of "<technique>.moments" over the frame.

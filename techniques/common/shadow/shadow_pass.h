@@ -1,7 +1,7 @@
 // Building blocks shared by the shadow-stage techniques: a full-screen pass over the G-buffer that
 // reads the stage's depth map and writes a frame-size output, and the filtering kit (tap
 // patterns, a blue-noise rotation texture, comparison and raw-depth samplers) for
-// shaders/common/shadow_filter.glsl.
+// shaders/shadow/common/shadow_filter.glsl.
 #pragma once
 #include "gl/objects.h"
 #include "gl/program.h"
@@ -23,7 +23,7 @@ struct PassContext;
 // the light's SHADOW_PROJECTION define plus `defines`; the G-buffer's shading point and smooth
 // normal of the shadow terminator rule (gbuffer.shadow_position/shadow_normal, docs/measuring.md
 // "The shading point") bound as uPosition/uGeometry (units 0, 1; xyz point and normal, w
-// coverage); the shadow-space uniforms of shaders/common/shadow_space.glsl
+// coverage); the shadow-space uniforms of shaders/shadow/common/shadow_space.glsl
 // set, and with `depthMap` the stage's map bound as uShadowMap (unit 2). `bind` sets the
 // technique's own uniforms and textures (units 3 and up).
 struct ShadowScreenPass {
@@ -58,7 +58,7 @@ void addLightDepthView(FrameGraph& frame, const std::string& view, ShadowFilterK
 
 class ShadowFilterKit {
 public:
-  static constexpr int kMaxTaps = 64;        // shaders/common/shadow_filter.glsl uTaps[64]
+  static constexpr int kMaxTaps = 64;        // shaders/shadow/common/shadow_filter.glsl uTaps[64]
   static constexpr int kNoiseSize = 64;
   enum class Pattern { Grid = 0, Poisson = 1, PoissonRotated = 2 };
 

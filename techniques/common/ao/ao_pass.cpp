@@ -1,4 +1,4 @@
-#include "shading/ao_pass.h"
+#include "techniques/common/ao/ao_pass.h"
 
 #include "frame/frame_graph.h"
 #include "gl/program_cache.h"

@@ -1,4 +1,4 @@
-#include "shading/shadow_pass.h"
+#include "techniques/common/shadow/shadow_pass.h"
 
 #include "frame/frame_graph.h"
 #include "frame/technique.h"
@@ -6,7 +6,7 @@
 #include "params/param_set.h"
 #include "shading/base_passes.h"
 #include "shading/gpu_common.h"
-#include "shading/shadow_depth.h"
+#include "techniques/common/shadow/shadow_depth.h"
 #include "util/sample_patterns.h"
 
 #include <algorithm>
@@ -77,7 +77,7 @@ void addLightDepthView(FrameGraph& frame, const std::string& view, ShadowFilterK
       },
       [&kit, projection, out](PassContext& ctx) {
         gl::Program& p =
-            ctx.programs.get({{"common/fullscreen.vert", "shading/light_depth.frag"}, {projection}, "light-depth-view"});
+            ctx.programs.get({{"common/fullscreen.vert", "shadow/light_depth.frag"}, {projection}, "light-depth-view"});
         ctx.beginFullscreen(out, {out});
         p.use();
         kit.bindRawDepth(ctx, p, "uDepth", 0);

@@ -1,4 +1,4 @@
-#include "shading/light_space.h"
+#include "techniques/common/shadow/light_space.h"
 
 #include "util/error.h"
 

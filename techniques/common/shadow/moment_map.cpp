@@ -1,4 +1,4 @@
-#include "shading/moment_map.h"
+#include "techniques/common/shadow/moment_map.h"
 
 #include "frame/frame_graph.h"
 #include "gl/program_cache.h"
@@ -6,7 +6,7 @@
 #include "shading/base_passes.h"
 #include "shading/gpu_common.h"
 #include "shading/scene_gpu.h"
-#include "shading/shadow_depth.h"
+#include "techniques/common/shadow/shadow_depth.h"
 #include "util/error.h"
 
 #include <algorithm>
@@ -17,7 +17,7 @@ namespace rtlab {
 std::string momentSatResource(const std::string& technique) { return technique + ".sat"; }
 
 float momentSatScale(const ParamSet& params, const MomentMapConfig& config) {
-  // The widest box a lookup makes: boxMoments (shaders/common/moments.glsl) takes at least half a
+  // The widest box a lookup makes: boxMoments (shaders/shadow/common/moments.glsl) takes at least half a
   // texel; the visibility shaders clamp the search to [1, max_search] and the filter to
   // [min_penumbra, max_penumbra]. A half-width r spans at most floor(2r) + 2 texels, and never
   // more than the map.
@@ -62,7 +62,7 @@ void addMomentMapPasses(FrameGraph& frame, const MomentMapConfig& config) {
         b.write(depth, depthDesc);
       },
       [=](PassContext& ctx) {
-        gl::Program& p = ctx.programs.get({{"shading/moments.vert", "shading/moments.frag"}, defines, moments});
+        gl::Program& p = ctx.programs.get({{"shadow/moments.vert", "shadow/moments.frag"}, defines, moments});
         const gl::Framebuffer& fbo = ctx.framebuffer(moments, {moments}, depth);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, size, size);
@@ -102,7 +102,7 @@ void addMomentMapPasses(FrameGraph& frame, const MomentMapConfig& config) {
         glBindImageTexture(0, ctx.texture(sat).id(), 0, GL_FALSE, 0, GL_READ_WRITE, satDesc.format);
         for (int axis = 0; axis < 2; ++axis) {
           gl::Program& p = ctx.programs.get(
-              {{"shading/sat.comp"}, {"AXIS " + std::to_string(axis), "FORMAT " + satImageFormat}, "sat"});
+              {{"shadow/sat.comp"}, {"AXIS " + std::to_string(axis), "FORMAT " + satImageFormat}, "sat"});
           p.use();
           ctx.texture(moments).bind(0);
           p.set("uInput", 0).set("uSize", size).set("uOffset", offset).set("uScale", scale);
@@ -123,7 +123,7 @@ void addMomentView(FrameGraph& frame, const std::string& technique, const std::s
       },
       [moments, out](PassContext& ctx) {
         // SHADOW_PROJECTION 0 shows the stored value as it is (it is already linear).
-        gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/light_depth.frag"}, {"SHADOW_PROJECTION 0"}, "moment-view"});
+        gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shadow/light_depth.frag"}, {"SHADOW_PROJECTION 0"}, "moment-view"});
         ctx.beginFullscreen(out, {out});
         p.use();
         ctx.texture(moments).bind(0);

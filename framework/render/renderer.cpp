@@ -1,4 +1,4 @@
-#include "frame/renderer.h"
+#include "render/renderer.h"
 
 #include "frame/aovs.h"
 #include "frame/frame_graph.h"

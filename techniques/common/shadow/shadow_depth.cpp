@@ -1,4 +1,4 @@
-#include "shading/shadow_depth.h"
+#include "techniques/common/shadow/shadow_depth.h"
 
 #include "frame/frame_graph.h"
 #include "gl/program_cache.h"
@@ -43,7 +43,7 @@ void addShadowDepthPass(FrameGraph& frame) {
   frame.addPass("shadow.depth", [&](PassBuilder& b) { b.write(kShadowDepth, desc); },
       [ls](PassContext& ctx) {
         gl::Texture& map = ctx.texture(kShadowDepth);
-        gl::Program& p = ctx.programs.get({{"shading/depth_only.vert", "shading/depth_only.frag"}, {}, "depth-only"});
+        gl::Program& p = ctx.programs.get({{"shadow/depth_only.vert", "shadow/depth_only.frag"}, {}, "depth-only"});
         glViewport(0, 0, map.desc().width, map.desc().height);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
