@@ -3,6 +3,7 @@
 // or shortest, PNG previews of data (--range, --false-color), compare's heat map and warnings,
 // scene.ambient, and the README's example commands that use assets/. docs/cli.md describes them.
 #include "process.h"
+#include "view_helpers.h"
 
 #include "image/image.h"
 
@@ -331,7 +332,9 @@ std::vector<std::string> words(const std::string& line) {
 
 TEST_F(CliMessages, ReadmeExamplesWithTheSampleSceneRun) {
   // Every README command that uses a file under assets/ runs as written (from the repository
-  // root; outputs redirected to a scratch folder, and a small frame).
+  // root; outputs redirected to a scratch folder, and a small frame). `rtlab view` runs under
+  // Xvfb until its first frame is saved (--frames 1 --screenshot), which it draws only after
+  // loading and checking the files it was given.
   std::ifstream readme(fs::path(RTLAB_SOURCE_DIR) / "README.md");
   ASSERT_TRUE(readme.good());
   int ran = 0;
@@ -348,8 +351,16 @@ TEST_F(CliMessages, ReadmeExamplesWithTheSampleSceneRun) {
     args.insert(args.end(), {"--size", "160x90"});
     if (std::find(args.begin(), args.end(), "--out") == args.end() && args[0] == "render")
       args.insert(args.end(), {"--out", path("default.png")});
-    const auto r = rtlab(args);
+    const bool view = args[0] == "view";
+    if (view) {
+      args.erase(args.begin());
+      args.insert(args.end(), {"--frames", "1", "--screenshot", path("view.png")});
+    }
+    const auto r = view ? rtlab::test::runView(args) : rtlab(args);
     EXPECT_EQ(r.exitCode, 0) << r.err;
+    if (view) {
+      EXPECT_TRUE(fs::exists(path("view.png")));
+    }
     for (std::size_t i = 0; i + 1 < args.size(); ++i)
       if (args[i] == "--out" || args[i] == "--save-preset") {
         EXPECT_TRUE(fs::exists(args[i + 1])) << args[i + 1];

@@ -117,7 +117,7 @@ TEST(ViewActions, SpeakerNotesAreExportedAsMarkdown) {
   EXPECT_EQ(r.exitCode, 6) << r.err;
 
   for (const char* lecture : {"shadow-family.json", "ao.json"}) {
-    const fs::path source = fs::path(RTLAB_SOURCE_DIR) / "docs" / "lecture" / lecture;
+    const fs::path source = fs::path(RTLAB_SOURCE_DIR) / "assets" / "lecture" / lecture;
     const fs::path out = dir / (std::string(lecture) + ".md");
     r = exportNotes(source.string(), out.string());
     ASSERT_EQ(r.exitCode, 0) << lecture << ": " << r.err;
@@ -125,7 +125,7 @@ TEST(ViewActions, SpeakerNotesAreExportedAsMarkdown) {
     const std::string text((std::istreambuf_iterator<char>(notes)), std::istreambuf_iterator<char>());
     EXPECT_EQ(text.find("(no notes)"), std::string::npos) << lecture << " has a bookmark without notes";
   }
-  const auto family = readJson(fs::path(RTLAB_SOURCE_DIR) / "docs" / "lecture" / "shadow-family.json");
+  const auto family = readJson(fs::path(RTLAB_SOURCE_DIR) / "assets" / "lecture" / "shadow-family.json");
   EXPECT_EQ(family["bookmarks"][4]["scene"], "stacked");
   EXPECT_EQ(family["bookmarks"][5]["scene"], "stacked");
 }
