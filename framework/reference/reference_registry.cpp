@@ -30,17 +30,6 @@ bool matches(const std::string& pattern, const std::string& key) {
 
 } // namespace
 
-std::string FrameInputs::describe() const {
-  std::string s;
-  auto add = [&](FrameInput input, const char* name) {
-    if (has(input)) s += (s.empty() ? "" : ", ") + std::string(name);
-  };
-  add(FrameInput::SurfacePoints, "surface points");
-  add(FrameInput::Materials, "materials");
-  add(FrameInput::PrePostColor, "colour before post");
-  return s.empty() ? "none" : s;
-}
-
 ReferenceFrame::ReferenceFrame(const ReferenceEntry& entry, const Scene& scene, const ParamSet& params, int spp,
                                unsigned seed, bool progress)
     : m_entry(entry), m_scene(scene), m_params(params), m_spp(spp), m_seed(seed), m_progress(progress) {}

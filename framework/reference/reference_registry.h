@@ -36,8 +36,6 @@ public:
     for (FrameInput i : inputs) m_bits |= unsigned(i);
   }
   bool has(FrameInput input) const { return (m_bits & unsigned(input)) != 0; }
-  unsigned bits() const { return m_bits; }
-  std::string describe() const; // "surface points, materials"; "none"
 
 private:
   unsigned m_bits = 0;
@@ -85,7 +83,7 @@ private:
 using ReferenceCompute = std::function<Image(const ReferenceFrame&, ReferenceStats&)>;
 
 struct ReferenceEntry {
-  std::string aov;    // `rtlab reference --aov <aov>`; also the AOV the stage's techniques output
+  std::string aov;    // `rtlab reference --aov <aov>`: the stage's output AOV for the three built-ins
   std::string stage;  // the stage it measures (frame/stages.h): sweeps of that stage compare against it
   std::string help;   // one line for --help
   int channels = 1;   // 1 or 3
