@@ -1,11 +1,35 @@
 #include "app/reference_run.h"
 
 #include "frame/pass_timer.h"
-#include "reference/reference.h"
+#include "frame/registry.h"
 #include "scene/scene_params.h"
 #include "util/error.h"
 
 namespace rtlab {
+namespace {
+
+// The scene as the reference may see it: the lights and camera as the frame's parameters set them;
+// its materials only when it declares FrameInput::Materials.
+Scene referenceScene(const ResolvedFrame& frame, const ReferenceEntry& reference) {
+  Scene scene = frame.scene;
+  applySceneParams(frame.params, scene);
+  if (!reference.inputs.has(FrameInput::Materials)) {
+    for (auto& m : scene.materials) m = Material{};
+    scene.textures.clear();
+  }
+  return scene;
+}
+
+// The frame's techniques outside the reference's own stage: the colour before post is what they
+// produce (the stage being measured is what the reference replaces).
+std::vector<std::string> techniquesBefore(const ResolvedFrame& frame, const ReferenceEntry& reference) {
+  std::vector<std::string> ids;
+  for (const auto& id : frame.techniques)
+    if (TechniqueRegistry::instance().get(id).info.stage != reference.stage) ids.push_back(id);
+  return ids;
+}
+
+} // namespace
 
 ReferenceInput referenceInput(Renderer& renderer, const ResolvedFrame& frame) {
   // The G-buffer of this frame: the same surface points the GPU shades. Only the G-buffer passes
@@ -24,6 +48,36 @@ ReferenceInput referenceInput(Renderer& renderer, const ResolvedFrame& frame) {
   return input;
 }
 
+Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const ReferenceEntry& reference, int spp,
+                           bool progress, ReferenceStats& stats) {
+  if (spp < reference.minSpp || spp > reference.maxSpp)
+    usageError("--spp " + std::to_string(spp) + " is out of range " + std::to_string(reference.minSpp) + ".." +
+               std::to_string(reference.maxSpp) + " for the " + reference.aov + " reference");
+  const Scene scene = referenceScene(frame, reference);
+  ReferenceFrame input(reference, scene, frame.params, spp, frame.options.seed, progress);
+
+  SurfaceData surfaces;
+  Image prePost;
+  const bool readsColor = reference.inputs.has(FrameInput::PrePostColor);
+  if (reference.inputs.has(FrameInput::SurfacePoints) || readsColor) {
+    if (readsColor) renderer.setTechniques(techniquesBefore(frame, reference));
+    FrameOutputs outputs;
+    outputs.surfaces = reference.inputs.has(FrameInput::SurfacePoints);
+    if (readsColor) outputs.resources.push_back(kPrePostColorResource);
+    PassTimer timer(TimingMethod::CpuFinish);
+    renderer.render(frame.params, frame.options.width, frame.options.height, outputs, timer);
+    if (outputs.surfaces) {
+      surfaces = renderer.readSurfaces();
+      input.setSurfaces(&surfaces);
+    }
+    if (readsColor) {
+      prePost = renderer.readResource(kPrePostColorResource, 3);
+      input.setPrePostColor(&prePost);
+    }
+  }
+  return reference.compute(input, stats);
+}
+
 Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const std::string& aov, int spp,
                            bool progress) {
   ReferenceStats stats;
@@ -32,18 +86,7 @@ Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const
 
 Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const std::string& aov, int spp,
                            bool progress, ReferenceStats& stats) {
-  if (!isReferenceAov(aov)) usageError("the reference has no AOV '" + aov + "' (choices: visibility, ao, indirect)");
-  ReferenceOptions options;
-  options.spp = spp;
-  options.seed = frame.options.seed;
-  options.aoRadius = frame.params.getFloat("ao.radius");
-  options.progress = progress;
-  if (spp < kReferenceMinSpp || spp > kReferenceMaxSpp)
-    usageError("--spp " + std::to_string(spp) + " is out of range " + std::to_string(kReferenceMinSpp) + ".." +
-               std::to_string(kReferenceMaxSpp));
-
-  const ReferenceInput input = referenceInput(renderer, frame);
-  return renderReference(input.scene, input.surfaces, aov, options, stats);
+  return renderReferenceFrame(renderer, frame, ReferenceRegistry::instance().get(aov), spp, progress, stats);
 }
 
 } // namespace rtlab

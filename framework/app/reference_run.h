@@ -1,10 +1,12 @@
-// The reference of one resolved frame: renders the frame's G-buffer with `renderer` (so the
-// surface points are the GPU's), reads the surfaces back and runs the CPU reference on them.
+// The reference of one resolved frame (docs/measuring.md "References per stage"): renders what the
+// registered reference declares as its inputs with `renderer` (the G-buffer's surface points, the
+// colour before post), reads them back and runs the reference's compute function on them.
 // Shared by `rtlab reference` and `rtlab sweep`.
 #pragma once
 #include "app/frame_options.h"
 #include "image/image.h"
 #include "reference/reference.h"
+#include "reference/reference_registry.h"
 #include "render/renderer.h"
 
 #include <string>
@@ -20,12 +22,15 @@ struct ReferenceInput {
 };
 ReferenceInput referenceInput(Renderer& renderer, const ResolvedFrame& frame);
 
-// aov: visibility | ao | indirect (Error(Usage) otherwise). ao.radius comes from frame.params;
-// the seed from frame.options.seed.
-// The renderer must hold frame.scene (Renderer::setScene); its active techniques do not matter.
+// Runs `reference` on the frame: spp in the reference's range (Error(Usage) otherwise), the seed
+// from frame.options.seed, parameters from frame.params. The renderer must hold frame.scene
+// (Renderer::setScene); it renders the frame's techniques of the other stages only when the
+// reference reads the colour before post.
+Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const ReferenceEntry& reference, int spp,
+                           bool progress, ReferenceStats& stats);
+// The same for the registered reference of `aov` (Error(Usage) naming the choices for another).
 Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const std::string& aov, int spp,
                            bool progress);
-// The same, also reporting rays cast and time spent ray casting.
 Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const std::string& aov, int spp,
                            bool progress, ReferenceStats& stats);
 

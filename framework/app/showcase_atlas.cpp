@@ -6,6 +6,7 @@
 #include "frame/registry.h"
 #include "frame/stages.h"
 #include "params/sweep_spec.h"
+#include "reference/reference_registry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -100,9 +101,10 @@ std::string stageSection(const StageInfo& stage, const std::string& scene, const
 std::vector<std::string> atlasVaries(const std::string& stageId, const std::vector<std::string>& techniques) {
   std::vector<std::string> varies;
   const StageInfo* stage = findStage(stageId);
+  const ReferenceEntry* reference = ReferenceRegistry::instance().findStage(stageId);
   if (stage)
     for (const auto& spec : stage->params)
-      if (isCountKey(spec) && !isReferenceDefiningKey(spec.key, stageId)) varies.push_back(lowAndDefault(spec));
+      if (isCountKey(spec) && !(reference && reference->definesKey(spec.key))) varies.push_back(lowAndDefault(spec));
   if (!varies.empty()) return varies;
   for (const auto& id : techniques)
     for (const auto& spec : TechniqueRegistry::instance().get(id).info.params)
@@ -117,7 +119,7 @@ std::vector<AtlasStage> buildAtlas(const AtlasOptions& options) {
   std::vector<AtlasStage> sections;
   const auto& registry = TechniqueRegistry::instance();
   for (const auto& stage : stages()) {
-    if (stage.output == "color") continue; // no reference to measure against yet
+    if (!ReferenceRegistry::instance().findStage(stage.id)) continue; // no reference to measure against
     std::vector<std::string> techniques;
     for (const auto& e : registry.entries())
       if (e.info.stage == stage.id) techniques.push_back(e.info.id);

@@ -192,7 +192,8 @@ void runReferenceJob(const SweepPlan& plan, int k) {
   if (referenceHash(plan, frame.params) != r.hash)
     throw Error(ExitCode::Internal, "reference " + std::to_string(k) + " of '" + plan.dir +
                                         "' does not match its plan (planned by another rtlab version?)");
-  frame.techniques.clear(); // the reference needs the G-buffer's surface points only
+  // The reference renders what its inputs need (app/reference_run.h): the G-buffer's surface
+  // points; the other stages' techniques only for the colour before post.
   frame.options.frames = 1;
   const std::string dest = referencePath(plan, r.hash);
   makeDirectory(fs::path(dest).parent_path().string());
@@ -200,7 +201,8 @@ void runReferenceJob(const SweepPlan& plan, int k) {
   auto context = createHeadlessContext(frame.options.backend);
   Renderer renderer(TechniqueRegistry::instance());
   renderer.setScene(frame.scene);
-  const Image image = renderReferenceFrame(renderer, frame, plan.aov, plan.spp, false);
+  ReferenceStats stats;
+  const Image image = renderReferenceFrame(renderer, frame, sweepReference(plan), plan.spp, false, stats);
 
   const std::string cached = cachedReferencePath(r.hash);
   if (!cached.empty()) {

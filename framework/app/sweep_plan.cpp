@@ -4,6 +4,7 @@
 #include "frame/registry.h"
 #include "frame/selection.h"
 #include "frame/stages.h"
+#include "reference/reference_registry.h"
 #include "scene/load.h"
 #include "scene/scene_params.h"
 #include "util/atomic_file.h"
@@ -56,10 +57,11 @@ std::vector<std::string> splitTechniques(const std::vector<std::string>& lists) 
   return ids;
 }
 
+// The stages with a registered reference, in frame order.
 std::string stageWithReferenceList() {
   std::string s;
   for (const auto& st : stages())
-    if (st.output != "color") s += (s.empty() ? "" : ", ") + st.id;
+    if (ReferenceRegistry::instance().findStage(st.id)) s += (s.empty() ? "" : ", ") + st.id;
   return s;
 }
 
@@ -184,15 +186,21 @@ std::string sceneContentHash(const Scene& scene) {
   return h.hex();
 }
 
+const ReferenceEntry& sweepReference(const SweepPlan& plan) {
+  const ReferenceEntry* reference = ReferenceRegistry::instance().findStage(plan.stage);
+  if (!reference) invalidPlan(plan.dir, "stage '" + plan.stage + "' has no reference");
+  return *reference;
+}
+
 std::string referenceHash(const SweepPlan& plan, const ParamSet& params) {
   Fnv1a64 h;
   h.text("rtlab-reference-1").text(versionString()).text(plan.sceneHash).text(plan.aov);
   h.u64(std::uint64_t(plan.width)).u64(std::uint64_t(plan.height)).u64(std::uint64_t(plan.spp)).u64(plan.seed);
-  for (const auto& spec : params.specs()) {
-    if (!isReferenceDefiningKey(spec.key, plan.stage)) continue;
-    const ParamValue& v = params.value(spec.key);
-    h.text(spec.key).f64(v.v[0]).f64(v.v[1]).f64(v.v[2]);
-  }
+  const ReferenceEntry& reference = sweepReference(plan);
+  hashReferenceKeys(reference, params, TechniqueRegistry::instance(), h);
+  // The colour before post also depends on which techniques of the other stages run.
+  if (reference.inputs.has(FrameInput::PrePostColor))
+    for (const auto& id : plan.baseTechniques) h.text(id);
   return h.hex();
 }
 
@@ -223,12 +231,14 @@ SweepPlan planSweep(const Args& frameArgs, const SweepRequest& request) {
     for (const auto& u : swept) list += (list.empty() ? "" : ", ") + u.id + " (" + u.stage + ")";
     usageError("sweep -t techniques must belong to one stage: " + list);
   }
-  const StageInfo* stage = findStage(plan.stage);
-  if (!stage || stage->output == "color")
+  const ReferenceEntry* reference = ReferenceRegistry::instance().findStage(plan.stage);
+  if (!reference)
     usageError("technique '" + plan.techniques.front() + "' is in stage '" + plan.stage +
-               "', whose output is color and has no reference yet; sweep needs a stage with a reference: " +
-               stageWithReferenceList());
-  plan.aov = stage->output;
+               "', which has no reference yet; sweep needs a stage with a reference: " + stageWithReferenceList());
+  if (request.spp < reference->minSpp || request.spp > reference->maxSpp)
+    usageError("--spp " + std::to_string(request.spp) + " is out of range " + std::to_string(reference->minSpp) + ".." +
+               std::to_string(reference->maxSpp) + " for the " + reference->aov + " reference");
+  plan.aov = findStage(plan.stage)->output; // what the points output and compare with the reference
 
   // The base frame: scene, preset, --set and frame options, validated as render would.
   ResolvedFrame base = resolveFrame(frameArgs);

@@ -5,6 +5,7 @@
 #include "app/args.h"
 #include "app/frame_options.h"
 #include "params/sweep_spec.h"
+#include "reference/reference_registry.h"
 
 #include <nlohmann/json.hpp>
 
@@ -77,8 +78,12 @@ ResolvedFrame resolvePointFrame(const SweepPlan& plan, const SweepPoint& point);
 
 // Content hash of a scene as loaded (geometry, instances, materials, textures, lights, camera).
 std::string sceneContentHash(const Scene& scene);
+// The registered reference of the plan's stage (Error(Input) if the stage has none: a plan from
+// another rtlab).
+const ReferenceEntry& sweepReference(const SweepPlan& plan);
 // The reference's identity: version, scene content, stage AOV, size, spp, seed, and the resolved
-// values of every reference-defining key (light<N>.*, camera.*, ao.radius for ao).
+// values of exactly the keys the stage's registered reference declares (reference/reference_registry.h:
+// light<N>.*, camera.*, and ao.radius for ao).
 std::string referenceHash(const SweepPlan& plan, const ParamSet& params);
 
 std::string pointDir(const SweepPlan& plan, int index);               // DIR/points/007

@@ -14,6 +14,18 @@
 namespace rtlab {
 namespace {
 
+// The reference's defining keys in words: "light and camera values, ao.radius".
+std::string definingKeysText(const ReferenceEntry& reference) {
+  const auto& keys = reference.keys;
+  const bool lightAndCamera = std::find(keys.begin(), keys.end(), "light<N>.") != keys.end() &&
+                              std::find(keys.begin(), keys.end(), "camera.") != keys.end();
+  std::string s = lightAndCamera ? "light and camera values" : "";
+  for (const auto& k : keys)
+    if (!lightAndCamera || (k != "light<N>." && k != "camera."))
+      s += (s.empty() ? "" : ", ") + (k.back() == '.' ? k + "*" : k);
+  return s;
+}
+
 // Distinguishable on white, and in order of the -t list.
 const char* kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
 
@@ -329,8 +341,8 @@ std::string sweepReportHtml(const SweepPlan& plan, const std::vector<SweepResult
     refs += "<figure>" + linked(file, image(png, "reference " + hash)) + "<figcaption><code>" + html::escape(hash) +
             "</code></figcaption></figure>";
   body += "<h2 id=\"references\">References</h2>\n<p class=\"meta\">Computed on the CPU from the frame's own surface "
-          "points, cached by content hash (scene, AOV, size, spp, seed, light and camera values" +
-          std::string(plan.stage == "ao" ? ", ao.radius" : "") + ").</p>\n" + refs + "\n";
+          "points, cached by content hash (scene, AOV, size, spp, seed, " +
+          definingKeysText(sweepReference(plan)) + ").</p>\n" + refs + "\n";
 
   // Parameters.
   std::vector<std::vector<std::string>> axes;
@@ -339,7 +351,7 @@ std::string sweepReportHtml(const SweepPlan& plan, const std::vector<SweepResult
     for (const auto& v : a.values) values += (values.empty() ? "" : ", ") + v;
     for (const auto& t : plan.techniques)
       if (sweepKeyApplies(a.key, {t, plan.stage})) applies += (applies.empty() ? "" : ", ") + t;
-    axes.push_back({a.key, a.spec, values, applies, isReferenceDefiningKey(a.key, plan.stage) ? "yes" : "no"});
+    axes.push_back({a.key, a.spec, values, applies, sweepReference(plan).definesKey(a.key) ? "yes" : "no"});
   }
   body += "<h2 id=\"parameters\">Parameters</h2>\n";
   body += html::table({"varied key", "--vary", "values", "applies to", "defines the reference"}, axes) + "\n";

@@ -132,11 +132,6 @@ bool sweepKeyApplies(const std::string& key, const SweepTechnique& technique) {
   return prefix == "tonemap" || prefix == "camera" || isLightKey(key);
 }
 
-bool isReferenceDefiningKey(const std::string& key, const std::string& stage) {
-  if (isLightKey(key) || startsWith(key, "camera.")) return true;
-  return stage == "ao" && key == "ao.radius";
-}
-
 std::vector<SweepGridPoint> buildSweepGrid(const std::vector<SweepTechnique>& techniques,
                                            const std::vector<SweepAxis>& axes, std::size_t maxPoints) {
   std::set<std::string> seen;

@@ -41,11 +41,6 @@ struct SweepTechnique {
 // "<id>." keys, and the frame-wide prefixes tonemap., light<N>. and camera.
 bool sweepKeyApplies(const std::string& key, const SweepTechnique& technique);
 
-// Whether `key` defines what the stage's reference computes (so points that differ in it need
-// different references): light<N>.* and camera.* for every stage, ao.radius for ao. Never a
-// technique's key.
-bool isReferenceDefiningKey(const std::string& key, const std::string& stage);
-
 // "light<N>." with N decimal digits.
 bool isLightKey(const std::string& key);
 

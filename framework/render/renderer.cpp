@@ -90,6 +90,7 @@ void Renderer::render(const ParamSet& params, int width, int height, const Frame
   std::vector<std::string> targets;
   for (const auto& aov : outputs.aovs) targets.push_back(isBuiltinAov(aov) ? addAovPass(graph, aov) : aovResource(aov));
   if (outputs.displayColor) targets.push_back(res::kColorLdr);
+  targets.insert(targets.end(), outputs.resources.begin(), outputs.resources.end());
   if (outputs.surfaces)
     for (const auto* r : {&res::kPosition, &res::kGeometry, &res::kNormal, &res::kShadowPosition, &res::kShadowNormal})
       targets.push_back(*r);
@@ -111,6 +112,12 @@ Image Renderer::readDisplayColor() const {
   const gl::Texture* tex = const_cast<ResourcePool&>(m_pool).find(res::kColorLdr);
   if (!tex) throw Error(ExitCode::Internal, "display color was not rendered");
   return readTexture(*tex, 3, false);
+}
+
+Image Renderer::readResource(const std::string& name, int channels) const {
+  const gl::Texture* tex = const_cast<ResourcePool&>(m_pool).find(name);
+  if (!tex) throw Error(ExitCode::Internal, "resource '" + name + "' was not rendered");
+  return readTexture(*tex, channels, false);
 }
 
 SurfaceData Renderer::readSurfaces() const {

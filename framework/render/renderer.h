@@ -30,6 +30,7 @@ struct FrameOutputs {
   std::vector<std::string> aovs; // built-in AOV names or active techniques' debug views
   bool displayColor = false;     // also produce tone-mapped color (color.ldr) for PNG or a window
   bool surfaces = false;         // keep the G-buffer's surface points for readSurfaces()
+  std::vector<std::string> resources = {}; // also keep these frame resources for readResource()
 };
 
 class Renderer {
@@ -56,6 +57,9 @@ public:
   Image readDisplayColor() const;
   // The surface points of the last frame (needs FrameOutputs::surfaces).
   SurfaceData readSurfaces() const;
+  // A resource of the last frame (kept with FrameOutputs::resources): its first `channels`
+  // channels, rows top to bottom, no mask. Error(Internal) if it was not rendered.
+  Image readResource(const std::string& name, int channels) const;
   // Texture of a resource of the last frame (the viewer draws it), or nullptr.
   const gl::Texture* resource(const std::string& name);
 

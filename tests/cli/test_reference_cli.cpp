@@ -123,6 +123,27 @@ TEST(CliReference, BadInputExitsWithTheContractCodes) {
   EXPECT_NE(help.out.find("--spp"), std::string::npos);
 }
 
+// The choices, the suggestion and the help come from the reference registry (docs/measuring.md
+// "References per stage"): every registered reference is listed with its one-line description.
+TEST(CliReference, UnknownAovNamesTheRegisteredChoices) {
+  const fs::path dir = testDir("choices");
+  const std::string out = (dir / "x.exr").string();
+  const auto bogus = runProcess(RTLAB_BINARY, {"reference", "--aov", "bogus", "--size", "8x8", "--out", out});
+  EXPECT_EQ(bogus.exitCode, 2) << bogus.err;
+  EXPECT_EQ(rtlab::test::lineCount(bogus.err), 1) << bogus.err;
+  EXPECT_NE(bogus.err.find("rtlab: error: unknown reference AOV 'bogus' (choices: visibility, ao, indirect)"),
+            std::string::npos)
+      << bogus.err;
+  const auto typo = runProcess(RTLAB_BINARY, {"reference", "--aov", "visibilty", "--size", "8x8", "--out", out});
+  EXPECT_EQ(typo.exitCode, 2) << typo.err;
+  EXPECT_NE(typo.err.find("did you mean 'visibility'"), std::string::npos) << typo.err;
+  EXPECT_TRUE(fs::is_empty(dir));
+  const auto help = runProcess(RTLAB_BINARY, {"reference", "--help"});
+  EXPECT_EQ(help.exitCode, 0);
+  EXPECT_NE(help.out.find("--aov visibility|ao|indirect"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("ao: ambient occlusion within ao.radius"), std::string::npos) << help.out;
+}
+
 TEST(CliReference, InterruptLeavesNoFile) {
   // Minutes of indirect light at this size: interrupted while casting rays.
   const fs::path dir = testDir("interrupt");

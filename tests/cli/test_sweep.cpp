@@ -456,4 +456,31 @@ TEST(SweepPlan, ReferenceDefiningKeysGetTheirOwnReferences) {
   EXPECT_EQ(bad.exitCode, 2) << bad.err;
 }
 
+// The reference's hash covers exactly the keys the stage's registered reference declares
+// (docs/measuring.md "References per stage"): ao.radius for ao gives one reference per value; a
+// technique key (pcf.samples, ssao.samples) shares one.
+TEST(SweepPlan, OnlyTheReferencesDeclaredKeysSplitIt) {
+  struct Case {
+    std::vector<std::string> args;
+    std::size_t points, references;
+  };
+  const std::vector<Case> cases = {
+      {{"-t", "ssao", "--scene", "cornell", "--vary", "ao.radius=0.3,0.6"}, 2, 2},
+      {{"-t", "ssao", "--scene", "cornell", "--vary", "ssao.samples=4,16"}, 2, 1},
+      {{"-t", "pcf", "--vary", "pcf.samples=4,16,32"}, 3, 1},
+  };
+  for (const auto& c : cases) {
+    const fs::path dir = testDir() / "declared";
+    const fs::path jobs = dir.parent_path() / "declared-jobs.txt";
+    std::vector<std::string> args = {"sweep", "--size", "32x32", "--out", dir.string(), "--emit-jobs", jobs.string()};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const auto r = runProcess(RTLAB_BINARY, args);
+    ASSERT_EQ(r.exitCode, 0) << c.args.back() << ": " << r.err;
+    const auto plan = nlohmann::json::parse(slurp(dir / "sweep.json"));
+    EXPECT_EQ(plan["points"].size(), c.points) << c.args.back();
+    EXPECT_EQ(plan["references"].size(), c.references) << c.args.back();
+    fs::remove_all(dir);
+  }
+}
+
 } // namespace

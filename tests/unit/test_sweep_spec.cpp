@@ -1,6 +1,6 @@
 // Sweep axes and grids (params/sweep_spec.h): value lists and LO:HI:N ranges validated against
-// each key's declaration, linear and log spacing, which keys apply to which technique, which keys
-// define the reference, and the cross product.
+// each key's declaration, linear and log spacing, which keys apply to which technique, and the cross
+// product. Which keys define the reference: test_reference_registry.cpp.
 #include "params/sweep_spec.h"
 #include "util/error.h"
 
@@ -107,16 +107,6 @@ TEST(SweepSpec, WhichKeysApply) {
   EXPECT_FALSE(sweepKeyApplies("pcss.samples", pcf));
   EXPECT_FALSE(sweepKeyApplies("ao.radius", pcf));
   EXPECT_FALSE(sweepKeyApplies("lightx.radius", pcf));
-}
-
-TEST(SweepSpec, ReferenceDefiningKeys) {
-  EXPECT_TRUE(isReferenceDefiningKey("light0.radius", "shadow"));
-  EXPECT_TRUE(isReferenceDefiningKey("camera.position", "shadow"));
-  EXPECT_TRUE(isReferenceDefiningKey("ao.radius", "ao"));
-  EXPECT_FALSE(isReferenceDefiningKey("ao.radius", "shadow"));
-  EXPECT_FALSE(isReferenceDefiningKey("shadow.resolution", "shadow"));
-  EXPECT_FALSE(isReferenceDefiningKey("pcf.samples", "shadow"));
-  EXPECT_FALSE(isReferenceDefiningKey("tonemap.exposure", "shadow"));
 }
 
 TEST(SweepSpec, GridIsACrossProductPerTechnique) {
