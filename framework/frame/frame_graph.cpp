@@ -20,18 +20,6 @@ bool g_stateCheckDefault = true;
 
 [[noreturn]] void graphError(const std::string& message) { throw Error(ExitCode::Internal, "frame graph: " + message); }
 
-bool isTexture(const ResourceDesc& d) { return std::holds_alternative<gl::TextureDesc>(d); }
-
-std::string difference(const ResourceDesc& a, const ResourceDesc& b) {
-  if (isTexture(a) != isTexture(b)) return isTexture(a) ? "texture vs buffer" : "buffer vs texture";
-  if (isTexture(a)) return gl::descDifference(std::get<gl::TextureDesc>(a), std::get<gl::TextureDesc>(b));
-  const auto& x = std::get<gl::BufferDesc>(a);
-  const auto& y = std::get<gl::BufferDesc>(b);
-  if (x.kind != y.kind) return std::string("kind ") + gl::bufferKindName(x.kind) + " vs " + gl::bufferKindName(y.kind);
-  if (x.bytes != y.bytes) return "bytes " + std::to_string(x.bytes) + " vs " + std::to_string(y.bytes);
-  return "";
-}
-
 GLenum imageAccess(Access a) {
   switch (a) {
   case Access::Read: return GL_READ_ONLY;
@@ -44,151 +32,6 @@ GLenum imageAccess(Access a) {
 int groups(int invocations, int local) { return local > 0 ? (invocations + local - 1) / local : 0; }
 
 } // namespace
-
-// ---- PassBuilder ----
-
-namespace {
-PassUse makeUse(const std::string& resource, UseKind kind, Access access, int binding = -1, int level = 0, int layer = -1) {
-  PassUse u;
-  u.resource = resource;
-  u.kind = kind;
-  u.access = access;
-  u.binding = binding;
-  u.level = level;
-  u.layer = layer;
-  return u;
-}
-PassUse described(PassUse u, const ResourceDesc& desc) {
-  u.hasDesc = true;
-  u.desc = desc;
-  return u;
-}
-UseKind bufferKind(BufferBinding b) { return b == BufferBinding::Storage ? UseKind::StorageBuffer : UseKind::AtomicCounter; }
-} // namespace
-
-void PassBuilder::add(PassUse use) { m_uses.push_back(std::move(use)); }
-
-void PassBuilder::read(const std::string& r) { add(makeUse(r, UseKind::Sampled, Access::Read)); }
-
-void PassBuilder::readIfPresent(const std::string& r) {
-  PassUse u = makeUse(r, UseKind::Sampled, Access::Read);
-  u.optional = true;
-  add(u);
-}
-
-void PassBuilder::write(const std::string& r, const gl::TextureDesc& desc) { writeAttachment(r, desc, 0, -1); }
-
-void PassBuilder::writeAttachment(const std::string& r, const gl::TextureDesc& desc, int level, int layer) {
-  add(described(makeUse(r, UseKind::Attachment, Access::Write, -1, level, layer), desc));
-}
-
-void PassBuilder::readImage(const std::string& r, int unit, int level) {
-  add(makeUse(r, UseKind::Image, Access::Read, unit, level));
-}
-
-void PassBuilder::writeImage(const std::string& r, const gl::TextureDesc& desc, int unit, int level) {
-  add(described(makeUse(r, UseKind::Image, Access::Write, unit, level), desc));
-}
-
-void PassBuilder::readWriteImage(const std::string& r, int unit, int level) {
-  add(makeUse(r, UseKind::Image, Access::ReadWrite, unit, level));
-}
-
-void PassBuilder::readBuffer(const std::string& r, BufferBinding binding, int index) {
-  add(makeUse(r, bufferKind(binding), Access::Read, index));
-}
-
-void PassBuilder::writeBuffer(const std::string& r, const gl::BufferDesc& desc, BufferBinding binding, int index) {
-  add(described(makeUse(r, bufferKind(binding), Access::Write, index), desc));
-}
-
-void PassBuilder::readWriteBuffer(const std::string& r, BufferBinding binding, int index) {
-  add(makeUse(r, bufferKind(binding), Access::ReadWrite, index));
-}
-
-void PassBuilder::readIndirect(const std::string& r) { add(makeUse(r, UseKind::Indirect, Access::Read)); }
-void PassBuilder::readBack(const std::string& r) { add(makeUse(r, UseKind::ReadBack, Access::Read)); }
-
-const PassUse* PassBuilder::attachment(const std::string& r) const {
-  for (const auto& u : m_uses)
-    if (u.kind == UseKind::Attachment && u.resource == r) return &u;
-  return nullptr;
-}
-
-// ---- ComputeGrid ----
-
-ComputeGrid ComputeGrid::frame() { return ComputeGrid{}; }
-
-ComputeGrid ComputeGrid::of(const std::string& resource, int level) {
-  ComputeGrid g;
-  g.source = Source::Resource;
-  g.resource = resource;
-  g.level = level;
-  return g;
-}
-
-ComputeGrid ComputeGrid::fixed(glm::ivec3 invocations) {
-  ComputeGrid g;
-  g.source = Source::Fixed;
-  g.size = invocations;
-  return g;
-}
-
-ComputeGrid ComputeGrid::indirect(const std::string& buffer, std::size_t offset) {
-  ComputeGrid g;
-  g.source = Source::Indirect;
-  g.resource = buffer;
-  g.offset = offset;
-  return g;
-}
-
-// ---- PassContext ----
-
-bool PassContext::has(const std::string& resource) const {
-  if (pass && pass->m_absent.count(resource)) return false;
-  return pool.has(resource);
-}
-
-gl::Texture& PassContext::texture(const std::string& resource) const {
-  gl::Texture* t = pool.find(resource);
-  if (!t) throw Error(ExitCode::Internal, "frame resource '" + resource + "' was not produced this frame");
-  return *t;
-}
-
-gl::BufferObject& PassContext::buffer(const std::string& resource) const {
-  gl::BufferObject* b = pool.findBuffer(resource);
-  if (!b) throw Error(ExitCode::Internal, "frame buffer '" + resource + "' was not produced this frame");
-  return *b;
-}
-
-const gl::Framebuffer& PassContext::framebuffer(const std::string& label, const std::vector<std::string>& colors,
-                                               const std::string& depth, int layer) const {
-  auto attachmentOf = [&](const std::string& name) {
-    gl::Attachment a{&texture(name), 0, -1};
-    if (const PassUse* u = pass ? pass->attachment(name) : nullptr) {
-      a.level = u->level;
-      a.layer = u->layer;
-    }
-    return a;
-  };
-  std::vector<gl::Attachment> attachments;
-  for (const auto& c : colors) attachments.push_back(attachmentOf(c));
-  gl::Attachment d;
-  if (!depth.empty()) {
-    d = attachmentOf(depth);
-    if (layer >= 0) d.layer = layer;
-  }
-  return pool.framebuffer(label, attachments, d);
-}
-
-void PassContext::beginFullscreen(const std::string& label, const std::vector<std::string>& colors) const {
-  const gl::Framebuffer& fbo = framebuffer(label, colors);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-  const PassUse* u = pass ? pass->attachment(colors.front()) : nullptr;
-  const int level = u ? u->level : 0;
-  const gl::TextureDesc& d = texture(colors.front()).desc();
-  glViewport(0, 0, d.widthAt(level), d.heightAt(level));
-}
 
 // ---- FrameGraph ----
 
@@ -239,7 +82,7 @@ void FrameGraph::checkDescriptions() const {
       if (!u.hasDesc) continue;
       auto [it, inserted] = first.emplace(u.resource, First{p.name, &u.desc});
       if (inserted) continue;
-      const std::string diff = difference(u.desc, *it->second.desc);
+      const std::string diff = descDifference(u.desc, *it->second.desc);
       if (!diff.empty())
         graphError("pass '" + p.name + "' describes '" + u.resource + "' differently from pass '" + it->second.pass +
                    "' (" + diff + ")");
@@ -268,7 +111,7 @@ void FrameGraph::checkReads() {
     for (const auto& u : p.decl.m_uses) {
       auto d = descs.find(u.resource);
       if (d == descs.end()) continue;
-      const bool texture = isTexture(d->second);
+      const bool texture = isTextureDesc(d->second);
       const bool textureUse = u.kind == UseKind::Sampled || u.kind == UseKind::Attachment || u.kind == UseKind::Image;
       const bool bufferUse = u.kind == UseKind::StorageBuffer || u.kind == UseKind::AtomicCounter || u.kind == UseKind::Indirect;
       if ((texture && bufferUse) || (!texture && textureUse))
@@ -287,7 +130,7 @@ void FrameGraph::checkReads() {
       const bool declared = std::any_of(p.decl.m_uses.begin(), p.decl.m_uses.end(),
                                         [&](const PassUse& u) { return u.resource == p.grid.resource; });
       auto d = descs.find(p.grid.resource);
-      if (!declared || d == descs.end() || !isTexture(d->second))
+      if (!declared || d == descs.end() || !isTextureDesc(d->second))
         graphError("compute pass '" + p.name + "' takes its grid from '" + p.grid.resource +
                    "', which it does not declare as a texture it uses");
     }
@@ -306,7 +149,7 @@ void FrameGraph::planBarriers(const std::vector<std::string>& targets) {
     p.barrier = 0;
     if (!p.kept) continue;
     for (const auto& u : p.decl.m_uses) {
-      if (u.hasDesc) textures[u.resource] = isTexture(u.desc);
+      if (u.hasDesc) textures[u.resource] = isTextureDesc(u.desc);
       // Any later use, read or write, must see the incoherent write: the bit of the using path.
       auto it = pending.find(u.resource);
       if (it == pending.end()) continue;
@@ -370,7 +213,7 @@ void FrameGraph::compile(const std::vector<std::string>& targets) {
     if (!p.kept) continue;
     for (const auto& u : p.decl.m_uses) {
       if (!u.hasDesc) continue;
-      if (isTexture(u.desc)) m_ctx.pool.acquire(u.resource, std::get<gl::TextureDesc>(u.desc));
+      if (isTextureDesc(u.desc)) m_ctx.pool.acquire(u.resource, std::get<gl::TextureDesc>(u.desc));
       else m_ctx.pool.acquire(u.resource, std::get<gl::BufferDesc>(u.desc));
     }
   }

@@ -2,6 +2,18 @@
 
 namespace rtlab {
 
+bool isTextureDesc(const ResourceDesc& d) { return std::holds_alternative<gl::TextureDesc>(d); }
+
+std::string descDifference(const ResourceDesc& a, const ResourceDesc& b) {
+  if (isTextureDesc(a) != isTextureDesc(b)) return isTextureDesc(a) ? "texture vs buffer" : "buffer vs texture";
+  if (isTextureDesc(a)) return gl::descDifference(std::get<gl::TextureDesc>(a), std::get<gl::TextureDesc>(b));
+  const auto& x = std::get<gl::BufferDesc>(a);
+  const auto& y = std::get<gl::BufferDesc>(b);
+  if (x.kind != y.kind) return std::string("kind ") + gl::bufferKindName(x.kind) + " vs " + gl::bufferKindName(y.kind);
+  if (x.bytes != y.bytes) return "bytes " + std::to_string(x.bytes) + " vs " + std::to_string(y.bytes);
+  return "";
+}
+
 GLbitfield barrierBitFor(UseKind kind, bool texture) {
   switch (kind) {
   case UseKind::Sampled: return GL_TEXTURE_FETCH_BARRIER_BIT;

@@ -11,6 +11,10 @@ namespace rtlab {
 
 // What a frame resource is: a texture or a buffer.
 using ResourceDesc = std::variant<gl::TextureDesc, gl::BufferDesc>;
+bool isTextureDesc(const ResourceDesc& desc);
+// The first field in which two descriptions differ ("size 32x64 vs 64x64", "bytes 32 vs 16",
+// "texture vs buffer"); "" when equal.
+std::string descDifference(const ResourceDesc& a, const ResourceDesc& b);
 
 enum class UseKind {
   Sampled,       // texture fetch through a sampler unit (the pass binds the texture itself)

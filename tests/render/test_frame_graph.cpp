@@ -139,6 +139,31 @@ TEST(FrameGraph, AtomicAppendIsReadByTheNextPassAfterAStorageBarrier) {
   EXPECT_EQ(drainGlErrors(), 0);
 }
 
+TEST(FrameGraph, IndirectDispatchTakesItsGroupCountsFromABufferAfterACommandBarrier) {
+  testContext().makeCurrent();
+  drainGlErrors();
+  GraphHarness h(8, 8);
+  constexpr unsigned groups = 5;
+  FrameGraph graph = h.graph();
+  graph.addComputePass(
+      "args", ComputeGrid::fixed({1, 1, 1}),
+      [&](PassBuilder& b) { b.writeBuffer("args", {gl::BufferKind::Indirect, 12}, BufferBinding::Storage, 0); },
+      [&](PassContext&) -> gl::Program& { return h.program({testShader("write_args.comp")}).set("uGroups", groups); });
+  graph.addComputePass(
+      "count", ComputeGrid::indirect("args"),
+      [&](PassBuilder& b) { b.writeBuffer("invocations", {gl::BufferKind::AtomicCounter, 4}, BufferBinding::AtomicCounter, 0); },
+      [&](PassContext& ctx) -> gl::Program& {
+        ctx.buffer("invocations").clear();
+        return h.program({testShader("count.comp")});
+      });
+  h.runFrame(graph, {"invocations"});
+  EXPECT_EQ(graph.barrierBefore("count"), GLbitfield(GL_COMMAND_BARRIER_BIT)) << barrierBitsName(graph.barrierBefore("count"));
+  const std::vector<unsigned> counted = h.pool.findBuffer("invocations")->downloadAs<unsigned>();
+  ASSERT_EQ(counted.size(), 1u);
+  EXPECT_EQ(counted[0], groups * 64) << "work groups from the buffer times the local size";
+  EXPECT_EQ(drainGlErrors(), 0);
+}
+
 TEST(FrameGraph, BarrierBitsFollowTheConsumingUse) {
   // One producer, one consumer per use kind: the bit before the consumer is the one that use needs.
   testContext().makeCurrent();
