@@ -20,6 +20,25 @@ bool g_stateCheckDefault = true;
 
 [[noreturn]] void graphError(const std::string& message) { throw Error(ExitCode::Internal, "frame graph: " + message); }
 
+// A use must suit what the resource is: buffer uses of buffers, texture uses of textures, levels
+// and layers in range, no depth texture as an image.
+void checkUseFits(const std::string& pass, const PassUse& u, const ResourceDesc& desc) {
+  const bool texture = isTextureDesc(desc);
+  const bool textureUse = u.kind == UseKind::Sampled || u.kind == UseKind::Attachment || u.kind == UseKind::Image;
+  const bool bufferUse = u.kind == UseKind::StorageBuffer || u.kind == UseKind::AtomicCounter || u.kind == UseKind::Indirect;
+  if ((texture && bufferUse) || (!texture && textureUse))
+    graphError("pass '" + pass + "' uses " + (texture ? "texture" : "buffer") + " '" + u.resource + "' as " +
+               (texture ? "a buffer" : "a texture") + " (" + useKindName(u.kind) + ")");
+  if (!texture || (u.kind != UseKind::Image && u.kind != UseKind::Attachment)) return;
+  const auto& td = std::get<gl::TextureDesc>(desc);
+  if (u.level < 0 || u.level >= td.levels || u.layer >= td.layersAt(u.level) || (u.layer >= 0 && !td.layered()))
+    graphError("pass '" + pass + "' uses level " + std::to_string(u.level) + " layer " + std::to_string(u.layer) + " of '" +
+               u.resource + "', a " + gl::targetName(td.target) + " texture with " + std::to_string(td.levels) +
+               " levels and " + std::to_string(td.layersAt(0)) + " layers");
+  if (u.kind == UseKind::Image && gl::isDepthFormat(td.format))
+    graphError("pass '" + pass + "' binds depth texture '" + u.resource + "' as an image");
+}
+
 GLenum imageAccess(Access a) {
   switch (a) {
   case Access::Read: return GL_READ_ONLY;
@@ -89,6 +108,7 @@ void FrameGraph::checkDescriptions() const {
     }
 }
 
+// In pass order over the kept passes: every read has an earlier writer, every use suits its resource.
 void FrameGraph::checkReads() {
   std::set<std::string> written;
   std::map<std::string, ResourceDesc> descs;
@@ -110,21 +130,7 @@ void FrameGraph::checkReads() {
     }
     for (const auto& u : p.decl.m_uses) {
       auto d = descs.find(u.resource);
-      if (d == descs.end()) continue;
-      const bool texture = isTextureDesc(d->second);
-      const bool textureUse = u.kind == UseKind::Sampled || u.kind == UseKind::Attachment || u.kind == UseKind::Image;
-      const bool bufferUse = u.kind == UseKind::StorageBuffer || u.kind == UseKind::AtomicCounter || u.kind == UseKind::Indirect;
-      if ((texture && bufferUse) || (!texture && textureUse))
-        graphError("pass '" + p.name + "' uses " + (texture ? "texture" : "buffer") + " '" + u.resource + "' as " +
-                   (texture ? "a buffer" : "a texture") + " (" + useKindName(u.kind) + ")");
-      if (texture && (u.kind == UseKind::Image || u.kind == UseKind::Attachment)) {
-        const auto& td = std::get<gl::TextureDesc>(d->second);
-        if (u.level < 0 || u.level >= td.levels || u.layer >= td.layersAt(u.level) || (u.layer >= 0 && !td.layered()))
-          graphError("pass '" + p.name + "' uses level " + std::to_string(u.level) + " layer " + std::to_string(u.layer) +
-                     " of '" + u.resource + "', which has " + std::to_string(td.levels) + " levels");
-        if (u.kind == UseKind::Image && gl::isDepthFormat(td.format))
-          graphError("pass '" + p.name + "' binds depth texture '" + u.resource + "' as an image");
-      }
+      if (d != descs.end()) checkUseFits(p.name, u, d->second);
     }
     if (p.compute && p.grid.source == ComputeGrid::Source::Resource) {
       const bool declared = std::any_of(p.decl.m_uses.begin(), p.decl.m_uses.end(),

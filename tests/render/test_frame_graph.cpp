@@ -311,6 +311,21 @@ TEST(FrameGraph, RefusesTwoDescriptionsOfOneResource) {
   EXPECT_EQ(compileError(buffers, {"b"}), "frame graph: pass 'c' describes 'b' differently from pass 'a' (bytes 32 vs 16)");
 }
 
+TEST(FrameGraph, RefusesUsesThatDoNotFitTheResource) {
+  testContext().makeCurrent();
+  GraphHarness h(8, 8);
+  FrameGraph layer = h.graph();
+  layer.addPass("a", [&](PassBuilder& b) { b.writeAttachment("t", rgba16f(GL_TEXTURE_2D, 8, 8), 0, 1); }, [](PassContext&) {});
+  EXPECT_EQ(compileError(layer, {"t"}),
+            "frame graph: pass 'a' uses level 0 layer 1 of 't', a 2D texture with 1 levels and 1 layers");
+
+  FrameGraph kind = h.graph();
+  kind.addPass("a", [&](PassBuilder& b) { b.writeBuffer("b", {gl::BufferKind::Storage, 16}, BufferBinding::Storage, 0); },
+               [](PassContext&) {});
+  kind.addPass("c", [&](PassBuilder& b) { b.read("b"); b.write("t", rgba16f(GL_TEXTURE_2D, 8, 8)); }, [](PassContext&) {});
+  EXPECT_EQ(compileError(kind, {"t"}), "frame graph: pass 'c' uses buffer 'b' as a texture (sampled)");
+}
+
 TEST(FrameGraph, AllowsAnInPlaceWriteWithTheSameDescription) {
   testContext().makeCurrent();
   GraphHarness h(8, 8);
