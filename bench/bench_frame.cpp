@@ -5,6 +5,7 @@
 #include "app/frame_options.h"
 #include "app/measure.h"
 #include "frame/registry.h"
+#include "gl/framebuffer.h"
 #include "gl/program_cache.h"
 #include "render/renderer.h"
 #include "shading/gpu_common.h"
@@ -26,7 +27,7 @@ double floorPassMs(gl::ProgramCache& programs, int width, int height, int warmup
   const float grey[4] = {0.5f, 0.5f, 0.5f, 1.0f};
   glClearTexImage(src.id(), 0, GL_RGBA, GL_FLOAT, grey);
   GpuCommon common;
-  gl::Framebuffer fbo = makeFramebuffer("bench.floor", {&dst});
+  gl::Framebuffer fbo = gl::makeFramebuffer("bench.floor", {&dst});
   gl::Program& p = programs.get({{"common/fullscreen.vert", "bench/one_fetch.frag"}, {}, "bench.one_fetch"});
   PassTimer timer(method);
   std::vector<double> ms;

@@ -1,7 +1,5 @@
 #include "frame/resource_pool.h"
 
-#include "shading/gpu_common.h"
-
 #include <algorithm>
 
 namespace rtlab {
@@ -10,19 +8,30 @@ gl::Texture& ResourcePool::acquire(const std::string& name, const gl::TextureDes
   auto it = m_textures.find(name);
   if (it != m_textures.end() && it->second.desc() == desc) return it->second;
   if (it != m_textures.end()) m_textures.erase(it);
+  m_buffers.erase(name);
   m_framebuffers.clear();
   return m_textures.emplace(name, gl::Texture(desc, name)).first->second;
 }
 
+gl::BufferObject& ResourcePool::acquire(const std::string& name, const gl::BufferDesc& desc) {
+  auto it = m_buffers.find(name);
+  if (it != m_buffers.end() && it->second.desc() == desc) return it->second;
+  if (it != m_buffers.end()) m_buffers.erase(it);
+  if (m_textures.erase(name) != 0) m_framebuffers.clear();
+  return m_buffers.emplace(name, gl::BufferObject(desc, name)).first->second;
+}
+
 void ResourcePool::releaseExcept(const std::vector<std::string>& keep) {
+  auto kept = [&](const std::string& name) { return std::find(keep.begin(), keep.end(), name) != keep.end(); };
   for (auto it = m_textures.begin(); it != m_textures.end();) {
-    if (std::find(keep.begin(), keep.end(), it->first) == keep.end()) {
+    if (!kept(it->first)) {
       m_framebuffers.clear();
       it = m_textures.erase(it);
     } else {
       ++it;
     }
   }
+  for (auto it = m_buffers.begin(); it != m_buffers.end();) it = kept(it->first) ? std::next(it) : m_buffers.erase(it);
 }
 
 gl::Texture* ResourcePool::find(const std::string& name) {
@@ -30,29 +39,49 @@ gl::Texture* ResourcePool::find(const std::string& name) {
   return it == m_textures.end() ? nullptr : &it->second;
 }
 
+gl::BufferObject* ResourcePool::findBuffer(const std::string& name) {
+  auto it = m_buffers.find(name);
+  return it == m_buffers.end() ? nullptr : &it->second;
+}
+
+const gl::Framebuffer& ResourcePool::framebuffer(const std::string& label, const std::vector<gl::Attachment>& colors,
+                                                const gl::Attachment& depth) {
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string&&.
+  std::string key = label;
+  auto add = [&](const gl::Attachment& a) {
+    key += "|";
+    key += std::to_string(a.texture ? a.texture->id() : 0);
+    key += ":";
+    key += std::to_string(a.level);
+    key += ":";
+    key += std::to_string(a.layer);
+  };
+  for (const auto& c : colors) add(c);
+  key += "|depth";
+  add(depth);
+  auto it = m_framebuffers.find(key);
+  if (it == m_framebuffers.end()) it = m_framebuffers.emplace(key, gl::makeFramebuffer(label, colors, depth)).first;
+  return it->second;
+}
+
 const gl::Framebuffer& ResourcePool::framebuffer(const std::string& label, const std::vector<const gl::Texture*>& colors,
                                                 const gl::Texture* depth, int layer) {
-  std::string key = label + "|";
-  for (const auto* c : colors) key += std::to_string(c->id()) + ",";
-  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string&&.
-  key += "|";
-  key += std::to_string(depth ? depth->id() : 0);
-  key += "|";
-  key += std::to_string(layer);
-  auto it = m_framebuffers.find(key);
-  if (it == m_framebuffers.end()) it = m_framebuffers.emplace(key, makeFramebuffer(label, colors, depth, layer)).first;
-  return it->second;
+  std::vector<gl::Attachment> attachments;
+  for (const gl::Texture* c : colors) attachments.push_back(gl::Attachment{c, 0, -1});
+  return framebuffer(label, attachments, gl::Attachment{depth, 0, depth ? layer : -1});
 }
 
 std::vector<ResourcePool::Entry> ResourcePool::entries() const {
   std::vector<Entry> out;
   for (const auto& [name, tex] : m_textures) out.push_back(Entry{name, tex.desc().bytes()});
+  for (const auto& [name, buf] : m_buffers) out.push_back(Entry{name, buf.desc().bytes});
+  std::sort(out.begin(), out.end(), [](const Entry& a, const Entry& b) { return a.name < b.name; });
   return out;
 }
 
 std::size_t ResourcePool::totalBytes() const {
   std::size_t total = 0;
-  for (const auto& [name, tex] : m_textures) total += tex.desc().bytes();
+  for (const auto& e : entries()) total += e.bytes;
   return total;
 }
 

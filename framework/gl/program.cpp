@@ -5,6 +5,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <sstream>
 
 namespace rtlab::gl {
@@ -122,12 +123,58 @@ Program& Program::set(const std::string& n, const glm::vec2& v) { glProgramUnifo
 Program& Program::set(const std::string& n, const glm::vec3& v) { glProgramUniform3fv(id(), location(n), 1, glm::value_ptr(v)); return *this; }
 Program& Program::set(const std::string& n, const glm::vec4& v) { glProgramUniform4fv(id(), location(n), 1, glm::value_ptr(v)); return *this; }
 Program& Program::set(const std::string& n, const glm::ivec2& v) { glProgramUniform2iv(id(), location(n), 1, glm::value_ptr(v)); return *this; }
+Program& Program::set(const std::string& n, const glm::ivec3& v) { glProgramUniform3iv(id(), location(n), 1, glm::value_ptr(v)); return *this; }
+Program& Program::set(const std::string& n, const glm::ivec4& v) { glProgramUniform4iv(id(), location(n), 1, glm::value_ptr(v)); return *this; }
+Program& Program::set(const std::string& n, unsigned v) { glProgramUniform1ui(id(), location(n), v); return *this; }
+Program& Program::set(const std::string& n, const glm::uvec2& v) { glProgramUniform2uiv(id(), location(n), 1, glm::value_ptr(v)); return *this; }
+Program& Program::set(const std::string& n, const glm::uvec3& v) { glProgramUniform3uiv(id(), location(n), 1, glm::value_ptr(v)); return *this; }
+Program& Program::set(const std::string& n, const glm::uvec4& v) { glProgramUniform4uiv(id(), location(n), 1, glm::value_ptr(v)); return *this; }
 Program& Program::set(const std::string& n, const glm::mat3& v) { glProgramUniformMatrix3fv(id(), location(n), 1, GL_FALSE, glm::value_ptr(v)); return *this; }
 Program& Program::set(const std::string& n, const glm::mat4& v) { glProgramUniformMatrix4fv(id(), location(n), 1, GL_FALSE, glm::value_ptr(v)); return *this; }
+
+Program& Program::set(const std::string& n, const std::vector<float>& v) {
+  if (!v.empty()) glProgramUniform1fv(id(), location(n), GLsizei(v.size()), v.data());
+  return *this;
+}
+
+Program& Program::set(const std::string& n, const std::vector<int>& v) {
+  if (!v.empty()) glProgramUniform1iv(id(), location(n), GLsizei(v.size()), v.data());
+  return *this;
+}
 
 Program& Program::set(const std::string& n, const std::vector<glm::vec2>& v) {
   if (!v.empty()) glProgramUniform2fv(id(), location(n), GLsizei(v.size()), glm::value_ptr(v.front()));
   return *this;
+}
+
+Program& Program::set(const std::string& n, const std::vector<glm::vec3>& v) {
+  if (!v.empty()) glProgramUniform3fv(id(), location(n), GLsizei(v.size()), glm::value_ptr(v.front()));
+  return *this;
+}
+
+Program& Program::set(const std::string& n, const std::vector<glm::vec4>& v) {
+  if (!v.empty()) glProgramUniform4fv(id(), location(n), GLsizei(v.size()), glm::value_ptr(v.front()));
+  return *this;
+}
+
+Program& Program::set(const std::string& n, const std::vector<glm::ivec3>& v) {
+  if (!v.empty()) glProgramUniform3iv(id(), location(n), GLsizei(v.size()), glm::value_ptr(v.front()));
+  return *this;
+}
+
+Program& Program::set(const std::string& n, const std::vector<glm::mat4>& v) {
+  if (!v.empty()) glProgramUniformMatrix4fv(id(), location(n), GLsizei(v.size()), GL_FALSE, glm::value_ptr(v.front()));
+  return *this;
+}
+
+glm::ivec3 Program::workGroupSize() const {
+  const bool compute = std::any_of(m_desc.stages.begin(), m_desc.stages.end(), [](const std::string& s) {
+    return s.size() > 5 && s.compare(s.size() - 5, 5, ".comp") == 0;
+  });
+  if (!compute) throw Error(ExitCode::Internal, "program '" + m_desc.key() + "' is not a compute program");
+  GLint size[3] = {1, 1, 1};
+  glGetProgramiv(id(), GL_COMPUTE_WORK_GROUP_SIZE, size);
+  return glm::ivec3(size[0], size[1], size[2]);
 }
 
 std::vector<std::filesystem::file_time_type> Program::sourceTimesNow() const {

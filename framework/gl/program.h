@@ -37,10 +37,25 @@ public:
   Program& set(const std::string& name, const glm::vec3& v);
   Program& set(const std::string& name, const glm::vec4& v);
   Program& set(const std::string& name, const glm::ivec2& v);
+  Program& set(const std::string& name, const glm::ivec3& v);
+  Program& set(const std::string& name, const glm::ivec4& v);
+  Program& set(const std::string& name, unsigned v);
+  Program& set(const std::string& name, const glm::uvec2& v);
+  Program& set(const std::string& name, const glm::uvec3& v);
+  Program& set(const std::string& name, const glm::uvec4& v);
   Program& set(const std::string& name, const glm::mat3& v);
   Program& set(const std::string& name, const glm::mat4& v);
   // Uniform arrays ("name" or "name[0]"); at most the declared length is written by GL.
+  Program& set(const std::string& name, const std::vector<float>& values);
+  Program& set(const std::string& name, const std::vector<int>& values);
   Program& set(const std::string& name, const std::vector<glm::vec2>& values);
+  Program& set(const std::string& name, const std::vector<glm::vec3>& values);
+  Program& set(const std::string& name, const std::vector<glm::vec4>& values);
+  Program& set(const std::string& name, const std::vector<glm::ivec3>& values);
+  Program& set(const std::string& name, const std::vector<glm::mat4>& values);
+
+  // A compute program's local size (layout(local_size_x ...)); Error(Internal) for other programs.
+  glm::ivec3 workGroupSize() const;
 
   // Files this program was built from (includes too) with their modification times, for reload.
   bool sourcesChanged() const;

@@ -59,27 +59,6 @@ void GpuCommon::drawFullscreen() const {
   glBindVertexArray(0);
 }
 
-gl::Framebuffer makeFramebuffer(const std::string& label, const std::vector<const gl::Texture*>& colors,
-                                const gl::Texture* depth, int layer) {
-  gl::Framebuffer fbo(label);
-  std::vector<GLenum> drawBuffers;
-  GLenum attachment = GL_COLOR_ATTACHMENT0;
-  for (const gl::Texture* c : colors) {
-    glNamedFramebufferTexture(fbo.id(), attachment, c->id(), 0);
-    drawBuffers.push_back(attachment++);
-  }
-  if (depth) {
-    if (layer >= 0) glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, depth->id(), 0, layer);
-    else glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, depth->id(), 0);
-  }
-  if (drawBuffers.empty()) glNamedFramebufferDrawBuffer(fbo.id(), GL_NONE);
-  else glNamedFramebufferDrawBuffers(fbo.id(), GLsizei(drawBuffers.size()), drawBuffers.data());
-  const GLenum status = glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw Error(ExitCode::Internal, "framebuffer '" + label + "' is incomplete (status 0x" + std::to_string(status) + ")");
-  return fbo;
-}
-
 gl::Texture makeBlueNoiseTexture(int size, std::uint32_t seed, const std::string& label) {
   gl::TextureDesc d;
   d.format = GL_R16F;

@@ -28,11 +28,6 @@ struct GpuCommon {
   void drawFullscreen() const;
 };
 
-// A framebuffer over the given attachments (color attachment i = colors[i]); `layer` selects a
-// cube face for a cube depth texture. Throws Error(Internal) if GL reports it incomplete.
-gl::Framebuffer makeFramebuffer(const std::string& label, const std::vector<const gl::Texture*>& colors,
-                                const gl::Texture* depth = nullptr, int layer = -1);
-
 // A size x size R16F texture (repeating) of blueNoise(size, seed) from util/sample_patterns.h: the
 // per-pixel rotations of the shadow filters and the ao estimators.
 gl::Texture makeBlueNoiseTexture(int size, std::uint32_t seed, const std::string& label);

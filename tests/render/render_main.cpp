@@ -4,6 +4,7 @@
 #include "frame/param_catalog.h"
 #include "frame/registry.h"
 #include "frame/selection.h"
+#include "frame/frame_graph.h"
 #include "frame/frame_view.h"
 #include "gl/debug.h"
 #include "scene/load.h"
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <memory>
 
@@ -88,13 +90,17 @@ bool projectToPixel(const TestFrame& frame, const glm::vec3& world, int& x, int&
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   try {
-    rtlab::g_context = rtlab::createHeadlessContext(rtlab::Backend::Auto);
+    // RTLAB_TEST_BACKEND=egl|osmesa runs the whole binary on one backend (default: auto).
+    const char* backend = std::getenv("RTLAB_TEST_BACKEND");
+    rtlab::g_context = rtlab::createHeadlessContext(backend ? rtlab::parseBackend(backend) : rtlab::Backend::Auto);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "render tests need a GL 4.5 context: %s\n", e.what());
     return 1;
   }
   std::printf("render tests on %s (%s)\n", rtlab::g_context->info().renderer.c_str(),
               rtlab::g_context->backendName().c_str());
+  // Every frame the tests render checks the GL state before and after each pass (docs/frame-graph.md).
+  rtlab::FrameGraph::setStateCheckDefault(true);
   const int rc = RUN_ALL_TESTS();
   rtlab::releaseTestRenderers();
   rtlab::g_context.reset();

@@ -2,6 +2,7 @@
 
 #include "frame/aovs.h"
 #include "gl/debug.h"
+#include "gl/state.h"
 #include "shading/base_passes.h"
 #include "util/error.h"
 
@@ -78,6 +79,7 @@ void ViewerFrame::render(ViewerState& state, int windowWidth, int windowHeight, 
   const auto now = std::chrono::steady_clock::now();
   if (m_shaderError.empty() || now >= m_retryAt) {
     try {
+      gl::restoreKnownState(); // the display and UI drawing leave their own state (docs/frame-graph.md)
       m_renderer.render(state.params, m_width, m_height, outputsFor(state, reference, referenceAov), m_timer);
       m_rendered = true;
       m_shaderError.clear();
