@@ -156,6 +156,7 @@ std::vector<ResourceUse> Renderer::resources() const {
   if (m_sceneGpu) {
     out.push_back(ResourceUse{"scene.geometry", m_sceneGpu->geometryBytes()});
     out.push_back(ResourceUse{"scene.textures", m_sceneGpu->textureBytes()});
+    if (m_sceneGpu->triangleBytes() > 0) out.push_back(ResourceUse{"scene.triangles", m_sceneGpu->triangleBytes()});
   }
   for (const auto& [id, t] : m_techniques)
     if (t->ownedBytes() > 0) out.push_back(ResourceUse{id + ".owned", t->ownedBytes()});

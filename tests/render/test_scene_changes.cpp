@@ -3,11 +3,7 @@
 // setup() of that frame, and never of a camera move, an ambient change or a repeated value.
 #include <gtest/gtest.h>
 
-#include "frame/param_catalog.h"
-#include "frame/registry.h"
-#include "params/param_set.h"
-#include "render_fixture.h"
-#include "scene/load.h"
+#include "own_registry.h"
 
 #include <memory>
 #include <string>
@@ -35,10 +31,10 @@ private:
   std::shared_ptr<EventLog> m_log;
 };
 
-class SceneChanges : public ::testing::Test {
+class SceneChanges : public OwnRegistryTest {
 protected:
   void SetUp() override {
-    testContext().makeCurrent();
+    OwnRegistryTest::SetUp();
     for (const char* id : {"count_a", "count_b"}) {
       TechniqueEntry e;
       e.info.id = id;
@@ -47,26 +43,18 @@ protected:
       e.create = [info = e.info, log = m_log] { return std::make_unique<CountingTechnique>(info, log); };
       m_registry.add(e);
     }
-    m_scene = loadScene("contact"); // two lights: a spot and a point
-    m_params = makeParamSet(m_scene, m_registry);
-    m_renderer = std::make_unique<Renderer>(m_registry);
-    m_renderer->setScene(m_scene);
+    load("contact"); // two lights: a spot and a point
   }
 
   // Renders `frames` frames (no outputs: every pass is culled, the techniques' setup still runs)
   // and returns the events they caused.
   EventLog render(int frames = 1) {
     m_log->clear();
-    PassTimer timer(TimingMethod::CpuFinish);
-    for (int i = 0; i < frames; ++i) m_renderer->render(m_params, 64, 64, FrameOutputs{}, timer);
+    OwnRegistryTest::render(FrameOutputs{}, frames);
     return *m_log;
   }
 
   std::shared_ptr<EventLog> m_log = std::make_shared<EventLog>();
-  TechniqueRegistry m_registry;
-  Scene m_scene;
-  ParamSet m_params;
-  std::unique_ptr<Renderer> m_renderer;
 };
 
 TEST_F(SceneChanges, ActivationNotifiesEverythingOnceBeforeTheFirstSetup) {
