@@ -1,5 +1,7 @@
 #include "scene/scene_change.h"
 
+#include "scene/scene.h"
+
 #include <algorithm>
 
 namespace rtlab {

@@ -2,11 +2,11 @@
 // technique that bakes data from the scene (a signed distance field, a voxelization, a light
 // injection) rebuilds it only when the category it depends on changed.
 #pragma once
-#include "scene/scene.h"
-
 #include <vector>
 
 namespace rtlab {
+
+struct Light; // scene/scene.h
 
 struct SceneChange {
   // Meshes, instances or their transforms: everything in the scene's triangle data
