@@ -3,6 +3,7 @@
 // and its debug views.
 #pragma once
 #include "params/param_spec.h"
+#include "scene/scene_change.h"
 
 #include <string>
 #include <vector>
@@ -34,6 +35,12 @@ public:
   // Called every frame while the technique is active: adds its passes, each declaring the
   // resources it reads and writes. Passes whose outputs nothing needs are culled.
   virtual void setup(FrameGraph& frame) = 0;
+  // Called before setup() on a frame where the scene changed since this technique last heard
+  // (docs/scene-data.md "Scene changes"): once with everything on the first frame after the
+  // technique is activated or a scene is set, once with `lights` after a light<N>.* key changed a
+  // light. At most one call per frame; never for a camera move or a repeated value. A technique
+  // that bakes scene data marks it stale here and rebuilds it in a pass.
+  virtual void sceneChanged(const SceneChange& /*change*/) {}
   // Technique-owned GPU memory outside the frame graph's pool (reported in stats).
   virtual std::size_t ownedBytes() const { return 0; }
 };

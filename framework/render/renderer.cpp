@@ -43,6 +43,7 @@ Renderer::~Renderer() {
 void Renderer::setScene(const Scene& scene) {
   m_scene = scene;
   m_sceneGpu = std::make_unique<SceneGpu>(m_scene);
+  m_notifier.sceneSet();
 }
 
 void Renderer::setTechniques(const std::vector<std::string>& orderedIds) {
@@ -53,6 +54,7 @@ void Renderer::setTechniques(const std::vector<std::string>& orderedIds) {
   for (const auto& id : orderedIds)
     if (!m_techniques.count(id)) m_techniques.emplace(id, m_registry.get(id).create());
   m_order = orderedIds;
+  m_notifier.setActive(orderedIds);
 }
 
 void Renderer::checkAov(const std::string& aov) const { checkAovName(aov, m_order, m_registry); }
@@ -62,6 +64,7 @@ void Renderer::render(const ParamSet& params, int width, int height, const Frame
   for (const auto& aov : outputs.aovs) checkAov(aov);
   applySceneParams(params, m_scene);
   m_common.uploadLights(m_scene);
+  m_notifier.deliver(m_scene.lights, m_order, m_techniques);
   const FrameView view = makeFrameView(m_scene.camera, width, height);
   FrameGraph graph(m_scene, params, view, *m_sceneGpu, m_programs, m_pool, m_common);
 
@@ -160,6 +163,7 @@ std::vector<ResourceUse> Renderer::resources() const {
   if (m_sceneGpu) {
     out.push_back(ResourceUse{"scene.geometry", m_sceneGpu->geometryBytes()});
     out.push_back(ResourceUse{"scene.textures", m_sceneGpu->textureBytes()});
+    if (m_sceneGpu->triangleBytes() > 0) out.push_back(ResourceUse{"scene.triangles", m_sceneGpu->triangleBytes()});
   }
   for (const auto& [id, t] : m_techniques)
     if (t->ownedBytes() > 0) out.push_back(ResourceUse{id + ".owned", t->ownedBytes()});

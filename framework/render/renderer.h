@@ -6,6 +6,7 @@
 #pragma once
 #include "frame/pass_timer.h"
 #include "frame/resource_pool.h"
+#include "frame/scene_notifier.h"
 #include "frame/stats.h"
 #include "frame/technique.h"
 #include "gl/program_cache.h"
@@ -38,7 +39,8 @@ public:
   explicit Renderer(const TechniqueRegistry& registry);
   ~Renderer();
 
-  // Copies the scene and uploads it.
+  // Copies the scene and uploads it. Every active technique hears of it (Technique::sceneChanged)
+  // before its setup() on the next frame.
   void setScene(const Scene& scene);
   const Scene& scene() const { return m_scene; }
   // Instantiates newly active techniques and destroys the ones no longer active.
@@ -48,7 +50,7 @@ public:
   // Error(Usage) if an AOV is unknown or belongs to an inactive technique.
   void checkAov(const std::string& aov) const;
   // Renders one frame at width x height; the scene's lights and camera take their values from
-  // `params` first. Timings go to `timer`.
+  // `params` first, then techniques hear of scene changes (docs/scene-data.md). Timings go to `timer`.
   void render(const ParamSet& params, int width, int height, const FrameOutputs& outputs, PassTimer& timer);
 
   // Reads an AOV of the last frame: channels 1 or 3, rows top to bottom, mask from coverage.
@@ -81,6 +83,7 @@ private:
   GpuCommon m_common;
   std::map<std::string, std::unique_ptr<Technique>> m_techniques;
   std::vector<std::string> m_order;
+  SceneNotifier m_notifier;
   std::vector<PassInfo> m_lastPasses;
 };
 

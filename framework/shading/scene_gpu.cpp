@@ -73,6 +73,11 @@ SceneGpu::SceneGpu(const Scene& scene) : m_scene(scene) {
   for (const auto& inst : scene.instances) m_hasTransparent = m_hasTransparent || inst.transparent;
 }
 
+const SceneTrianglesGpu& SceneGpu::triangles() {
+  if (!m_triangles) m_triangles = std::make_unique<SceneTrianglesGpu>(m_scene);
+  return *m_triangles;
+}
+
 void SceneGpu::bindMaterial(gl::Program& p, int index) const {
   static const Material kDefault{};
   const Material& m = (index >= 0 && index < int(m_scene.materials.size())) ? m_scene.materials[index] : kDefault;
