@@ -18,6 +18,9 @@ FrameStats renderMeasured(Renderer& renderer, const ResolvedFrame& frame, const 
     if (i >= warmup) stats.addFrame(timer, errors);
   }
   stats.setResources(renderer.resources());
+  // Once, after the timed frames: waits for the last frame, which the caller's image readback
+  // waits for anyway (docs/stages.md "The HDR clamp").
+  stats.setHdrClamped(renderer.readHdrClamped());
   if (stats.glErrors() > 0) logWarn(std::to_string(stats.glErrors()) + " GL errors during the measured frames");
   return stats;
 }

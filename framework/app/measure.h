@@ -1,5 +1,6 @@
 // Renders a resolved frame the way every command measures it: 2 warm-up frames when more than
-// one frame is measured (docs/contract.md --frames), GL errors counted per frame, resources recorded.
+// one frame is measured (docs/contract.md --frames), GL errors counted per frame, resources and the
+// last frame's HDR clamp counts recorded.
 #pragma once
 #include "app/frame_options.h"
 #include "frame/renderer.h"

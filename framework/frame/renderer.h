@@ -22,6 +22,7 @@
 
 namespace rtlab {
 
+class FrameGraph;
 class ParamSet;
 class TechniqueRegistry;
 
@@ -30,6 +31,7 @@ struct FrameOutputs {
   std::vector<std::string> aovs; // built-in AOV names or active techniques' debug views
   bool displayColor = false;     // also produce tone-mapped color (color.ldr) for PNG or a window
   bool surfaces = false;         // keep the G-buffer's surface points for readSurfaces()
+  std::vector<std::string> colors{}; // colour versions to keep for readColor(): "lighting", "lit", "pre_post", "hdr"
 };
 
 class Renderer {
@@ -54,6 +56,15 @@ public:
   Image readAov(const std::string& aov) const;
   // The tone-mapped color of the last frame (linear, 3 channels; sRGB is applied on output).
   Image readDisplayColor() const;
+  // A colour version of the last frame (docs/stages.md "Colour versions"; it must be in
+  // FrameOutputs::colors): linear, 3 channels, rows top to bottom, mask from coverage.
+  Image readColor(const std::string& version) const;
+  // The resource that held a colour version in the last frame (an alias of an earlier version's
+  // resource when no pass changed the colour in between). Error(Internal) before a frame.
+  const std::string& colorVersionResource(const std::string& version) const;
+  // HDR clamp counts of the last frame, per pass that ran (docs/stages.md "The HDR clamp"). Waits
+  // for the GPU: call once after the measured frames, only when stats are wanted.
+  std::vector<HdrClampCount> readHdrClamped() const;
   // The surface points of the last frame (needs FrameOutputs::surfaces).
   SurfaceData readSurfaces() const;
   // Texture of a resource of the last frame (the viewer draws it), or nullptr.
@@ -69,6 +80,10 @@ public:
   gl::ProgramCache& programs() { return m_programs; }
 
 private:
+  // Adds the G-buffer, the stages in table order with the lighting pass before the first colour
+  // stage, and records the colour versions; returns the final colour's resource.
+  std::string addStagePasses(FrameGraph& graph);
+
   const TechniqueRegistry& m_registry;
   Scene m_scene;
   std::unique_ptr<SceneGpu> m_sceneGpu;
@@ -78,6 +93,7 @@ private:
   std::map<std::string, std::unique_ptr<Technique>> m_techniques;
   std::vector<std::string> m_order;
   std::vector<PassInfo> m_lastPasses;
+  std::map<std::string, std::string> m_colorResources; // colour version -> resource, last frame
 };
 
 } // namespace rtlab
