@@ -67,7 +67,7 @@ void Renderer::render(const ParamSet& params, int width, int height, const Frame
   const FrameView view = makeFrameView(m_scene.camera, width, height);
   FrameGraph graph(m_scene, params, view, *m_sceneGpu, m_programs, m_pool, m_common);
 
-  m_common.hdrClamp.beginFrame();
+  m_common.hdrClamp.beginFrame(outputs.countHdrClamped);
   const std::string finalColor = addStagePasses(graph);
   addTonemapPass(graph, finalColor);
 

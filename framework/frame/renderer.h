@@ -32,6 +32,7 @@ struct FrameOutputs {
   bool displayColor = false;     // also produce tone-mapped color (color.ldr) for PNG or a window
   bool surfaces = false;         // keep the G-buffer's surface points for readSurfaces()
   std::vector<std::string> colors{}; // colour versions to keep for readColor(): "lighting", "lit", "pre_post", "hdr"
+  bool countHdrClamped = false;      // count the HDR clamp's pixels (readHdrClamped); slower shaders, for stats only
 };
 
 class Renderer {
@@ -62,8 +63,8 @@ public:
   // The resource that held a colour version in the last frame (an alias of an earlier version's
   // resource when no pass changed the colour in between). Error(Internal) before a frame.
   const std::string& colorVersionResource(const std::string& version) const;
-  // HDR clamp counts of the last frame, per pass that ran (docs/stages.md "The HDR clamp"). Waits
-  // for the GPU: call once after the measured frames, only when stats are wanted.
+  // HDR clamp counts of the last frame rendered with FrameOutputs::countHdrClamped, per pass that
+  // ran (docs/stages.md "The HDR clamp"). Waits for the GPU: for stats only.
   std::vector<HdrClampCount> readHdrClamped() const;
   // The surface points of the last frame (needs FrameOutputs::surfaces).
   SurfaceData readSurfaces() const;

@@ -97,6 +97,7 @@ void addLightingPass(FrameGraph& frame, const std::string& output, bool rectLigh
         for (const auto& stage : stages())
           if (stage.feedsLighting() && ctx.has(stage.output)) defines.push_back(lightingInput(stage).define);
         if (!rectLightsAsPoints) defines.push_back("SKIP_RECT_LIGHTS");
+        if (ctx.common.hdrClamp.counting()) defines.push_back("HDR_CLAMP_COUNT");
         gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/lighting.frag"}, defines, "lighting"});
         ctx.beginFullscreen("lighting", {output});
         p.use();
@@ -150,7 +151,9 @@ void addTransparentPass(FrameGraph& frame, const std::string& input, const std::
         glDisable(GL_CULL_FACE);
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-        gl::Program& p = ctx.programs.get({{"shading/surface.vert", "shading/forward.frag"}, {}, "forward"});
+        std::vector<std::string> defines;
+        if (ctx.common.hdrClamp.counting()) defines.push_back("HDR_CLAMP_COUNT");
+        gl::Program& p = ctx.programs.get({{"shading/surface.vert", "shading/forward.frag"}, defines, "forward"});
         p.set("uViewProj", ctx.view.viewProj)
             .set("uCameraPosition", ctx.view.cameraPosition)
             .set("uAmbient", ctx.scene.ambient);

@@ -6,7 +6,9 @@
 
 namespace rtlab {
 
-void HdrClampCounters::beginFrame() {
+void HdrClampCounters::beginFrame(bool count) {
+  m_counting = count;
+  if (!count) return;
   if (!m_buffer) {
     m_buffer = gl::Buffer("hdr_clamp.counters");
     glNamedBufferStorage(m_buffer.id(), GLsizeiptr(kMaxPasses * sizeof(GLuint)), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -26,7 +28,7 @@ int HdrClampCounters::slot(const std::string& pass) const {
 }
 
 void HdrClampCounters::bind(gl::Program& program, const std::string& pass, const char* uniform) const {
-  if (!m_buffer) throw Error(ExitCode::Internal, "HDR clamp counters bound before beginFrame()");
+  if (!m_counting) return;
   const int index = slot(pass);
   m_used[std::size_t(index)] = true;
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBinding, m_buffer.id());

@@ -96,7 +96,7 @@ struct StageRenderer {
     params = makeParamSet(scene, testRegistry());
   }
   void render(const std::vector<std::string>& techniques, const std::vector<std::string>& aovs,
-              const std::vector<std::string>& colors = {}) {
+              const std::vector<std::string>& colors = {}, bool countHdrClamped = false) {
     testContext().makeCurrent();
     renderer.setTechniques(techniques);
     drainGlErrors();
@@ -104,6 +104,7 @@ struct StageRenderer {
     FrameOutputs outputs;
     outputs.aovs = aovs;
     outputs.colors = colors;
+    outputs.countHdrClamped = countHdrClamped;
     renderer.render(params, kW, kH, outputs, timer);
     EXPECT_EQ(drainGlErrors(), 0);
   }
@@ -309,7 +310,7 @@ std::uint64_t clampedPixels(const std::vector<HdrClampCount>& counts, const std:
 // these checks still pass there), so on llvmpipe it is the counts that fail without the change.
 TEST(HdrClamp, EmitterOf1e5IsFiniteAndCountedPerPass) {
   StageRenderer r(hdrScene());
-  r.render({}, {"color", "albedo"}, {"lit", "pre_post"});
+  r.render({}, {"color", "albedo"}, {"lit", "pre_post"}, true);
   const Image color = r.renderer.readAov("color"), albedo = r.renderer.readAov("albedo");
   const Image lit = r.renderer.readColor("lit"), prePost = r.renderer.readColor("pre_post");
 
@@ -335,14 +336,18 @@ TEST(HdrClamp, EmitterOf1e5IsFiniteAndCountedPerPass) {
   EXPECT_EQ(clampedPixels(counts, "lighting"), emitterPixels);
   EXPECT_EQ(clampedPixels(counts, "transparent"), panePixels);
 
-  // Counters start from zero every frame.
+  // Counters start from zero every counted frame; a frame that does not count leaves them.
+  r.render({}, {"color"}, {}, true);
+  EXPECT_EQ(clampedPixels(r.renderer.readHdrClamped(), "lighting"), emitterPixels);
   r.render({}, {"color"});
   EXPECT_EQ(clampedPixels(r.renderer.readHdrClamped(), "lighting"), emitterPixels);
+  // Without counting the clamp still holds.
+  for (float v : r.renderer.readAov("color").pixels) ASSERT_TRUE(std::isfinite(v) && v <= 65504.0f);
 }
 
 TEST(HdrClamp, NothingClampedInAnOrdinaryFrame) {
   StageRenderer r(loadScene("cornell"));
-  r.render({}, {"color"});
+  r.render({}, {"color"}, {}, true);
   const auto counts = r.renderer.readHdrClamped();
   EXPECT_EQ(clampedPixels(counts, "gbuffer"), 0u);
   EXPECT_EQ(clampedPixels(counts, "lighting"), 0u);
