@@ -57,6 +57,14 @@ int runList(int argc, char** argv) {
       sj["output"] = s.output;
       sj["params"] = nlohmann::ordered_json::array();
       for (const auto& p : s.params) sj["params"].push_back(paramSpecToJson(p));
+      // Extensions (docs/stages.md): the rest of the stage's declaration.
+      sj["order"] = s.order;
+      sj["predicate"] = predicateName(s.predicate);
+      sj["lighting"] = lightingEffectName(s.lighting);
+      if (s.feedsLighting()) sj["neutral"] = s.neutral;
+      else sj["neutral"] = nullptr; // colour stages: identity, their version aliases the input
+      sj["color_version"] = s.colorVersion;
+      sj["fallback"] = s.fallback;
       stageArray.push_back(sj);
     }
     j["stages"] = stageArray;

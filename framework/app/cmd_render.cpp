@@ -59,7 +59,7 @@ int runRender(int argc, char** argv) {
   FrameOutputs outputs;
   if (!display) outputs.aovs = {aov};
   outputs.displayColor = display;
-  const FrameStats stats = renderMeasured(renderer, frame, outputs, timing);
+  const FrameStats stats = renderMeasured(renderer, frame, outputs, timing, !statsPath.empty());
 
   Image image = display ? renderer.readDisplayColor() : renderer.readAov(aov);
   writeAovImage(out, image, aov, preview);

@@ -128,7 +128,7 @@ int runShowcase(int argc, char** argv) {
       shownParams.insert(shownParams.end(), info.params.begin(), info.params.end());
     }
     FrameOutputs outputs{aovs, true};
-    const FrameStats stats = renderMeasured(*renderer, frame, outputs, timing);
+    const FrameStats stats = renderMeasured(*renderer, frame, outputs, timing, true);
     const std::string stem = fileStem(job);
     std::string figures;
     writeImage(outDir + "/" + stem + "_color.png", renderer->readDisplayColor(), PngEncoding::Srgb);

@@ -6,7 +6,7 @@
 namespace rtlab {
 
 FrameStats renderMeasured(Renderer& renderer, const ResolvedFrame& frame, const FrameOutputs& outputs,
-                          TimingMethod timing) {
+                          TimingMethod timing, bool countHdrClamp) {
   renderer.setTechniques(frame.techniques);
   drainGlErrors(); // set-up errors are not a frame's
   PassTimer timer(timing);
@@ -18,6 +18,15 @@ FrameStats renderMeasured(Renderer& renderer, const ResolvedFrame& frame, const 
     if (i >= warmup) stats.addFrame(timer, errors);
   }
   stats.setResources(renderer.resources());
+  if (countHdrClamp) {
+    FrameOutputs counted = outputs;
+    counted.countHdrClamped = true;
+    PassTimer untimed(timing);
+    renderer.render(frame.params, frame.options.width, frame.options.height, counted, untimed);
+    const int errors = drainGlErrors();
+    if (errors > 0) logWarn(std::to_string(errors) + " GL errors in the frame that counts the HDR clamp");
+    stats.setHdrClamped(renderer.readHdrClamped());
+  }
   if (stats.glErrors() > 0) logWarn(std::to_string(stats.glErrors()) + " GL errors during the measured frames");
   return stats;
 }

@@ -63,7 +63,7 @@ Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const
     if (readsColor) renderer.setTechniques(techniquesBefore(frame, reference));
     FrameOutputs outputs;
     outputs.surfaces = reference.inputs.has(FrameInput::SurfacePoints);
-    if (readsColor) outputs.resources.push_back(kPrePostColorResource);
+    if (readsColor) outputs.colors.push_back(kPrePostColorVersion);
     PassTimer timer(TimingMethod::CpuFinish);
     renderer.render(frame.params, frame.options.width, frame.options.height, outputs, timer);
     if (outputs.surfaces) {
@@ -71,7 +71,7 @@ Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const
       input.setSurfaces(&surfaces);
     }
     if (readsColor) {
-      prePost = renderer.readResource(kPrePostColorResource, 3);
+      prePost = renderer.readColor(kPrePostColorVersion);
       input.setPrePostColor(&prePost);
     }
   }

@@ -258,7 +258,7 @@ void runPointJob(const SweepPlan& plan, int n) {
     drainGlErrors();
   }
   const double measuredFrom = unixSeconds();
-  const FrameStats stats = renderMeasured(renderer, frame, outputs, timing);
+  const FrameStats stats = renderMeasured(renderer, frame, outputs, timing, true);
   const double measuredTo = unixSeconds();
   writeImage((dir / "aov.exr").string(), renderer.readAov(plan.aov));
   writeImage((dir / "color.png").string(), renderer.readDisplayColor(), PngEncoding::Srgb);

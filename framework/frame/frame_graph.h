@@ -118,6 +118,15 @@ public:
 
   // Passes added after this are attributed to `technique` in stats ("" = the framework).
   void setTechnique(const std::string& technique) { m_technique = technique; }
+  // Colour stages (docs/stages.md "Colour versions"): the colour resource the technique being set
+  // up reads, and the one it must write (RGBA16F, frame-sized). The renderer sets both around each
+  // colour-stage technique's setup; they are empty for the other stages.
+  void setColorVersions(const std::string& input, const std::string& output) {
+    m_colorInput = input;
+    m_colorOutput = output;
+  }
+  const std::string& colorInput() const { return m_colorInput; }
+  const std::string& colorOutput() const { return m_colorOutput; }
   void addPass(const std::string& name, const std::function<void(PassBuilder&)>& setup,
                std::function<void(PassContext&)> execute);
   // A compute pass: `execute` sets up and returns its compute program; the graph then dispatches
@@ -184,6 +193,7 @@ private:
 
   PassContext m_ctx;
   std::string m_technique;
+  std::string m_colorInput, m_colorOutput;
   std::vector<Pass> m_passes;
   std::vector<Barrier> m_barriers;
   GLbitfield m_endBarrier = 0;

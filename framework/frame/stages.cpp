@@ -1,11 +1,34 @@
 #include "frame/stages.h"
 
+#include "scene/scene.h"
+
+#include <algorithm>
+
 namespace rtlab {
+
+bool StageInfo::feedsLighting() const {
+  return lighting == LightingEffect::MultiplyLight0Direct || lighting == LightingEffect::MultiplyAmbientIndirect ||
+         lighting == LightingEffect::AddIndirect;
+}
+
+bool StageInfo::appliesTo(const Scene& scene) const {
+  switch (predicate) {
+  case StagePredicate::Always: return true;
+  case StagePredicate::RectLight: return scene.hasAreaLight();
+  case StagePredicate::TransparentMaterial: return scene.hasTransparency();
+  }
+  return true;
+}
 
 const std::vector<StageInfo>& stages() {
   static const std::vector<StageInfo> list = [] {
     std::vector<StageInfo> s;
-    StageInfo shadow{"shadow", true, "visibility", {}};
+    auto add = [&](StageInfo st) {
+      st.order = int(s.size());
+      s.push_back(std::move(st));
+    };
+    //        id, order, exclusive, predicate, output, neutral, lighting effect, colour version, fallback
+    StageInfo shadow{"shadow", 0, true, StagePredicate::Always, "visibility", 1.0f, LightingEffect::MultiplyLight0Direct, "", "", {}};
     shadow.params = {
         ParamSpec::integer("shadow.resolution", "Map resolution", 2048, 256, 4096)
             .logScale().withUnit("texels").withFlags(kParamRealloc)
@@ -21,16 +44,17 @@ const std::vector<StageInfo>& stages() {
         ParamSpec::boolean("shadow.cull_front", "Cull front faces", false)
             .withHelp("Render back faces only into the map (closed meshes only; single-sided planes then cast no shadow)"),
     };
-    s.push_back(shadow);
-    StageInfo ao{"ao", true, "ao", {}};
+    add(shadow);
+    StageInfo ao{"ao", 0, true, StagePredicate::Always, "ao", 1.0f, LightingEffect::MultiplyAmbientIndirect, "", "", {}};
     ao.params = {ParamSpec::real("ao.radius", "AO radius", 0.5, 0.01, 10.0)
                      .logScale().withUnit("scene units")
                      .withHelp("Occluders farther than this from the point do not occlude (every AO technique and the reference)")};
-    s.push_back(ao);
-    s.push_back(StageInfo{"indirect", true, "indirect", {}});
-    s.push_back(StageInfo{"arealight", true, "color", {}});
-    s.push_back(StageInfo{"transparency", true, "color", {}});
-    s.push_back(StageInfo{"post", false, "color", {}});
+    add(ao);
+    add(StageInfo{"indirect", 0, true, StagePredicate::Always, "indirect", 0.0f, LightingEffect::AddIndirect, "", "", {}});
+    add(StageInfo{"arealight", 0, true, StagePredicate::RectLight, "color", 0.0f, LightingEffect::ReplaceRectLights, "lit", "", {}});
+    add(StageInfo{"transparency", 0, true, StagePredicate::TransparentMaterial, "color", 0.0f, LightingEffect::TransformColor,
+                  "pre_post", "transparent", {}});
+    add(StageInfo{"post", 0, false, StagePredicate::Always, "color", 0.0f, LightingEffect::TransformColor, "hdr", "", {}});
     return s;
   }();
   return list;
@@ -40,6 +64,47 @@ const StageInfo* findStage(const std::string& id) {
   for (const auto& s : stages())
     if (s.id == id) return &s;
   return nullptr;
+}
+
+const StageInfo* stageWithOutput(const std::string& aov) {
+  for (const auto& s : stages())
+    if (s.output == aov && s.feedsLighting()) return &s;
+  return nullptr;
+}
+
+const char* predicateName(StagePredicate p) {
+  switch (p) {
+  case StagePredicate::Always: return "always";
+  case StagePredicate::RectLight: return "rect_light";
+  case StagePredicate::TransparentMaterial: return "transparent_material";
+  }
+  return "always";
+}
+
+const char* lightingEffectName(LightingEffect e) {
+  switch (e) {
+  case LightingEffect::MultiplyLight0Direct: return "multiply_light0_direct";
+  case LightingEffect::MultiplyAmbientIndirect: return "multiply_ambient_indirect";
+  case LightingEffect::AddIndirect: return "add_indirect";
+  case LightingEffect::ReplaceRectLights: return "replace_rect_lights";
+  case LightingEffect::TransformColor: return "transform_color";
+  }
+  return "transform_color";
+}
+
+const std::vector<std::string>& colorVersions() {
+  static const std::vector<std::string> list = [] {
+    std::vector<std::string> v{"lighting"};
+    for (const auto& s : stages())
+      if (!s.colorVersion.empty()) v.push_back(s.colorVersion);
+    return v;
+  }();
+  return list;
+}
+
+bool isColorVersion(const std::string& version) {
+  const auto& v = colorVersions();
+  return std::find(v.begin(), v.end(), version) != v.end();
 }
 
 std::vector<ParamSpec> tonemapParams() {

@@ -63,6 +63,9 @@ nlohmann::ordered_json FrameStats::toJson() const {
   j["resources"] = resArray;
   j["resource_bytes"] = resourceBytes();
   j["gl_errors"] = m_glErrors;
+  auto clampArray = nlohmann::ordered_json::array();
+  for (const auto& c : m_hdrClamped) clampArray.push_back({{"pass", c.pass}, {"pixels", c.pixels}});
+  j["hdr_clamped"] = clampArray;
   return j;
 }
 

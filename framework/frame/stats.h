@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -16,11 +17,20 @@ struct ResourceUse {
   std::size_t bytes = 0;
 };
 
+// Pixels a pass clamped to 65504 in the last frame (docs/stages.md "The HDR clamp").
+struct HdrClampCount {
+  std::string pass;
+  std::uint64_t pixels = 0;
+};
+
 class FrameStats {
 public:
   // Adds one measured frame.
   void addFrame(const PassTimer& timer, int glErrors);
   void setResources(std::vector<ResourceUse> resources) { m_resources = std::move(resources); }
+  // The HDR clamp counts of the last measured frame (Renderer::readHdrClamped).
+  void setHdrClamped(std::vector<HdrClampCount> counts) { m_hdrClamped = std::move(counts); }
+  const std::vector<HdrClampCount>& hdrClamped() const { return m_hdrClamped; }
 
   struct PassSummary {
     std::string name, technique;
@@ -36,7 +46,7 @@ public:
   double techniqueMs(const std::string& technique) const;
 
   // Fields that depend only on what was measured: frames, frame_ms, passes, resources,
-  // resource_bytes, gl_errors. The caller adds the run's description (schema, version, ...).
+  // resource_bytes, gl_errors, hdr_clamped. The caller adds the run's description (schema, version, ...).
   nlohmann::ordered_json toJson() const;
 
 private:
@@ -47,6 +57,7 @@ private:
   std::vector<Series> m_series;
   std::vector<double> m_frameMs;
   std::vector<ResourceUse> m_resources;
+  std::vector<HdrClampCount> m_hdrClamped;
   int m_glErrors = 0;
 };
 

@@ -41,8 +41,8 @@ private:
   unsigned m_bits = 0;
 };
 
-// The resource the PrePostColor input reads (docs/contract.md, named colour versions).
-inline constexpr const char* kPrePostColorResource = "color.pre_post";
+// The colour version the PrePostColor input reads (docs/stages.md "Colour versions").
+inline constexpr const char* kPrePostColorVersion = "pre_post";
 
 struct ReferenceEntry;
 

@@ -62,38 +62,23 @@ void Renderer::checkAov(const std::string& aov) const { checkAovName(aov, m_orde
 void Renderer::render(const ParamSet& params, int width, int height, const FrameOutputs& outputs, PassTimer& timer) {
   if (!m_sceneGpu) throw Error(ExitCode::Internal, "render() before setScene()");
   for (const auto& aov : outputs.aovs) checkAov(aov);
+  for (const auto& version : outputs.colors)
+    if (!isColorVersion(version)) throw Error(ExitCode::Internal, "unknown colour version '" + version + "'");
   applySceneParams(params, m_scene);
   m_common.uploadLights(m_scene);
   m_notifier.deliver(m_scene.lights, m_order, m_techniques);
   const FrameView view = makeFrameView(m_scene.camera, width, height);
   FrameGraph graph(m_scene, params, view, *m_sceneGpu, m_programs, m_pool, m_common);
 
-  auto setupStage = [&](const std::string& stage) {
-    for (const auto& id : m_order) {
-      Technique& t = *m_techniques.at(id);
-      if (t.info().stage != stage) continue;
-      graph.setTechnique(id);
-      t.setup(graph);
-    }
-    graph.setTechnique("");
-  };
-  addGBufferPass(graph);
-  for (const char* stage : {"shadow", "ao", "indirect"}) setupStage(stage);
-  addLightingPass(graph);
-  if (m_scene.hasAreaLight()) setupStage("arealight"); // no area light: no area-light stage
-  if (m_scene.hasTransparency()) {
-    const bool oit = std::any_of(m_order.begin(), m_order.end(),
-                                 [&](const std::string& id) { return m_techniques.at(id)->info().stage == "transparency"; });
-    if (oit) setupStage("transparency");
-    else addTransparentPass(graph);
-  }
-  setupStage("post");
-  addTonemapPass(graph);
+  m_common.hdrClamp.beginFrame(outputs.countHdrClamped);
+  const std::string finalColor = addStagePasses(graph);
+  addTonemapPass(graph, finalColor);
 
   std::vector<std::string> targets;
-  for (const auto& aov : outputs.aovs) targets.push_back(isBuiltinAov(aov) ? addAovPass(graph, aov) : aovResource(aov));
+  for (const auto& aov : outputs.aovs)
+    targets.push_back(isBuiltinAov(aov) ? addAovPass(graph, aov, finalColor) : aovResource(aov));
+  for (const auto& version : outputs.colors) targets.push_back(colorVersionResource(version));
   if (outputs.displayColor) targets.push_back(res::kColorLdr);
-  targets.insert(targets.end(), outputs.resources.begin(), outputs.resources.end());
   if (outputs.surfaces)
     for (const auto* r : {&res::kPosition, &res::kGeometry, &res::kNormal, &res::kShadowPosition, &res::kShadowNormal})
       targets.push_back(*r);
@@ -105,6 +90,91 @@ void Renderer::render(const ParamSet& params, int width, int height, const Frame
   for (const auto& p : graph.passes()) m_lastPasses.push_back(PassInfo{p.name, p.technique, p.kept});
 }
 
+std::string Renderer::addStagePasses(FrameGraph& graph) {
+  // A stage runs when its scene predicate holds and a technique of it is active, or it has a
+  // built-in fallback (docs/stages.md "The stage table").
+  const auto& table = stages();
+  std::vector<std::vector<std::string>> techniquesOf(table.size());
+  for (const auto& id : m_order) techniquesOf[std::size_t(findStage(m_techniques.at(id)->info().stage)->order)].push_back(id);
+  std::vector<bool> runs(table.size());
+  bool rectLightsAsPoints = true;
+  for (const auto& s : table) {
+    const std::size_t i = std::size_t(s.order);
+    runs[i] = s.appliesTo(m_scene) && (!techniquesOf[i].empty() || !s.fallback.empty());
+    if (runs[i] && s.lighting == LightingEffect::ReplaceRectLights) rectLightsAsPoints = false;
+  }
+  // The resource a colour writer (the lighting pass: order -1, or a colour stage) writes: named
+  // after the last version it stands for, i.e. up to the next colour stage that runs. So a frame
+  // whose colour stages do not run writes color.hdr directly, with no copy.
+  auto writerOutput = [&](int order) {
+    std::string version = order < 0 ? colorVersions().front() : table[std::size_t(order)].colorVersion;
+    for (std::size_t i = std::size_t(order + 1); i < table.size(); ++i) {
+      if (table[i].colorVersion.empty()) continue;
+      if (runs[i]) break;
+      version = table[i].colorVersion;
+    }
+    return colorResource(version);
+  };
+
+  m_colorResources.clear();
+  std::string color; // the current colour version's resource
+  auto addLighting = [&] {
+    color = writerOutput(-1);
+    addLightingPass(graph, color, rectLightsAsPoints);
+    m_colorResources[colorVersions().front()] = color;
+  };
+  addGBufferPass(graph);
+  for (const auto& s : table) {
+    const std::size_t i = std::size_t(s.order);
+    if (!s.feedsLighting() && color.empty()) addLighting();
+    if (runs[i] && s.feedsLighting()) {
+      for (const auto& id : techniquesOf[i]) {
+        graph.setTechnique(id);
+        m_techniques.at(id)->setup(graph);
+      }
+    } else if (runs[i] && techniquesOf[i].empty()) {
+      const std::string out = writerOutput(s.order);
+      addStageFallback(graph, s.fallback, color, out);
+      color = out;
+    } else if (runs[i]) {
+      // Colour stage: each technique reads the current version and writes the next; a stacked
+      // technique before the last writes an intermediate of its own.
+      for (std::size_t k = 0; k < techniquesOf[i].size(); ++k) {
+        const std::string& id = techniquesOf[i][k];
+        const std::string out = k + 1 == techniquesOf[i].size() ? writerOutput(s.order) : "color.after_" + id;
+        graph.setTechnique(id);
+        graph.setColorVersions(color, out);
+        m_techniques.at(id)->setup(graph);
+        if (graph.isProduced(out)) color = out; // a technique that wrote nothing leaves the colour as it was
+      }
+      graph.setColorVersions("", "");
+    }
+    graph.setTechnique("");
+    if (!s.colorVersion.empty()) m_colorResources[s.colorVersion] = color;
+  }
+  if (color.empty()) addLighting();
+  return color;
+}
+
+const std::string& Renderer::colorVersionResource(const std::string& version) const {
+  const auto it = m_colorResources.find(version);
+  if (it == m_colorResources.end()) throw Error(ExitCode::Internal, "colour version '" + version + "' does not exist");
+  return it->second;
+}
+
+Image Renderer::readColor(const std::string& version) const {
+  auto& pool = const_cast<ResourcePool&>(m_pool);
+  const gl::Texture* tex = pool.find(colorVersionResource(version));
+  const gl::Texture* geometry = pool.find(res::kGeometry);
+  if (!tex || !geometry)
+    throw Error(ExitCode::Internal, "colour version '" + version + "' was not kept (FrameOutputs::colors)");
+  Image img = readTexture(*tex, 3, false);
+  img.mask = readTexture(*geometry, 1, true).mask;
+  return img;
+}
+
+std::vector<HdrClampCount> Renderer::readHdrClamped() const { return m_common.hdrClamp.read(); }
+
 Image Renderer::readAov(const std::string& aov) const {
   const gl::Texture* tex = const_cast<ResourcePool&>(m_pool).find(aovResource(aov));
   if (!tex) throw Error(ExitCode::Internal, "AOV '" + aov + "' was not rendered");
@@ -115,12 +185,6 @@ Image Renderer::readDisplayColor() const {
   const gl::Texture* tex = const_cast<ResourcePool&>(m_pool).find(res::kColorLdr);
   if (!tex) throw Error(ExitCode::Internal, "display color was not rendered");
   return readTexture(*tex, 3, false);
-}
-
-Image Renderer::readResource(const std::string& name, int channels) const {
-  const gl::Texture* tex = const_cast<ResourcePool&>(m_pool).find(name);
-  if (!tex) throw Error(ExitCode::Internal, "resource '" + name + "' was not rendered");
-  return readTexture(*tex, channels, false);
 }
 
 SurfaceData Renderer::readSurfaces() const {

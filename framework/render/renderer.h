@@ -23,6 +23,7 @@
 
 namespace rtlab {
 
+class FrameGraph;
 class ParamSet;
 class TechniqueRegistry;
 
@@ -31,7 +32,8 @@ struct FrameOutputs {
   std::vector<std::string> aovs; // built-in AOV names or active techniques' debug views
   bool displayColor = false;     // also produce tone-mapped color (color.ldr) for PNG or a window
   bool surfaces = false;         // keep the G-buffer's surface points for readSurfaces()
-  std::vector<std::string> resources = {}; // also keep these frame resources for readResource()
+  std::vector<std::string> colors{}; // colour versions to keep for readColor(): "lighting", "lit", "pre_post", "hdr"
+  bool countHdrClamped = false;      // count the HDR clamp's pixels (readHdrClamped); slower shaders, for stats only
 };
 
 class Renderer {
@@ -57,11 +59,17 @@ public:
   Image readAov(const std::string& aov) const;
   // The tone-mapped color of the last frame (linear, 3 channels; sRGB is applied on output).
   Image readDisplayColor() const;
+  // A colour version of the last frame (docs/stages.md "Colour versions"; it must be in
+  // FrameOutputs::colors): linear, 3 channels, rows top to bottom, mask from coverage.
+  Image readColor(const std::string& version) const;
+  // The resource that held a colour version in the last frame (an alias of an earlier version's
+  // resource when no pass changed the colour in between). Error(Internal) before a frame.
+  const std::string& colorVersionResource(const std::string& version) const;
+  // HDR clamp counts of the last frame rendered with FrameOutputs::countHdrClamped, per pass that
+  // ran (docs/stages.md "The HDR clamp"). Waits for the GPU: for stats only.
+  std::vector<HdrClampCount> readHdrClamped() const;
   // The surface points of the last frame (needs FrameOutputs::surfaces).
   SurfaceData readSurfaces() const;
-  // A resource of the last frame (kept with FrameOutputs::resources): its first `channels`
-  // channels, rows top to bottom, no mask. Error(Internal) if it was not rendered.
-  Image readResource(const std::string& name, int channels) const;
   // Texture of a resource of the last frame (the viewer draws it), or nullptr.
   const gl::Texture* resource(const std::string& name);
 
@@ -75,6 +83,10 @@ public:
   gl::ProgramCache& programs() { return m_programs; }
 
 private:
+  // Adds the G-buffer, the stages in table order with the lighting pass before the first colour
+  // stage, and records the colour versions; returns the final colour's resource.
+  std::string addStagePasses(FrameGraph& graph);
+
   const TechniqueRegistry& m_registry;
   Scene m_scene;
   std::unique_ptr<SceneGpu> m_sceneGpu;
@@ -85,6 +97,7 @@ private:
   std::vector<std::string> m_order;
   SceneNotifier m_notifier;
   std::vector<PassInfo> m_lastPasses;
+  std::map<std::string, std::string> m_colorResources; // colour version -> resource, last frame
 };
 
 } // namespace rtlab

@@ -23,6 +23,31 @@ gl::TextureDesc frameTexture(const FrameGraph& frame, GLenum format) {
 
 std::string aovResource(const std::string& aov) { return "aov." + aov; }
 
+std::string colorResource(const std::string& version) { return "color." + version; }
+
+namespace {
+
+// How lighting.frag consumes each effect of a stage that feeds it: the define that enables the
+// code, and the sampler the output is bound to.
+struct LightingInput {
+  LightingEffect effect;
+  const char* define;
+  const char* sampler;
+};
+constexpr LightingInput kLightingInputs[] = {
+    {LightingEffect::MultiplyLight0Direct, "HAS_VISIBILITY", "uVisibility"},
+    {LightingEffect::MultiplyAmbientIndirect, "HAS_AO", "uAo"},
+    {LightingEffect::AddIndirect, "HAS_INDIRECT", "uIndirect"},
+};
+
+const LightingInput& lightingInput(const StageInfo& stage) {
+  for (const auto& in : kLightingInputs)
+    if (in.effect == stage.lighting) return in;
+  throw Error(ExitCode::Internal, std::string("lighting.frag has no input for effect ") + lightingEffectName(stage.lighting));
+}
+
+} // namespace
+
 void addGBufferPass(FrameGraph& frame) {
   frame.addPass("gbuffer",
       [&](PassBuilder& b) {
@@ -59,23 +84,22 @@ void addGBufferPass(FrameGraph& frame) {
       });
 }
 
-void addLightingPass(FrameGraph& frame) {
+void addLightingPass(FrameGraph& frame, const std::string& output, bool rectLightsAsPoints) {
   frame.addPass("lighting",
       [&](PassBuilder& b) {
         for (const auto* r : {&res::kPosition, &res::kNormal, &res::kGeometry, &res::kAlbedo, &res::kMaterial}) b.read(*r);
-        b.readIfPresent("visibility");
-        b.readIfPresent("ao");
-        b.readIfPresent("indirect");
-        b.write(res::kColorHdr, frameTexture(frame, GL_RGBA16F));
+        for (const auto& stage : stages())
+          if (stage.feedsLighting()) b.readIfPresent(stage.output);
+        b.write(output, frameTexture(frame, GL_RGBA16F));
       },
-      [](PassContext& ctx) {
+      [output, rectLightsAsPoints](PassContext& ctx) {
         std::vector<std::string> defines;
-        const std::pair<const char*, const char*> optional[] = {
-            {"visibility", "HAS_VISIBILITY"}, {"ao", "HAS_AO"}, {"indirect", "HAS_INDIRECT"}};
-        for (const auto& [name, define] : optional)
-          if (ctx.has(name)) defines.push_back(define);
+        for (const auto& stage : stages())
+          if (stage.feedsLighting() && ctx.has(stage.output)) defines.push_back(lightingInput(stage).define);
+        if (!rectLightsAsPoints) defines.push_back("SKIP_RECT_LIGHTS");
+        if (ctx.common.hdrClamp.counting()) defines.push_back("HDR_CLAMP_COUNT");
         gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/lighting.frag"}, defines, "lighting"});
-        ctx.beginFullscreen("lighting", {res::kColorHdr});
+        ctx.beginFullscreen("lighting", {output});
         p.use();
         int unit = 0;
         auto bind = [&](const char* uniform, const std::string& resource) {
@@ -87,26 +111,38 @@ void addLightingPass(FrameGraph& frame) {
         bind("uGeometry", res::kGeometry);
         bind("uAlbedo", res::kAlbedo);
         bind("uMaterial", res::kMaterial);
-        if (ctx.has("visibility")) bind("uVisibility", "visibility");
-        if (ctx.has("ao")) bind("uAo", "ao");
-        if (ctx.has("indirect")) bind("uIndirect", "indirect");
+        for (const auto& stage : stages())
+          if (stage.feedsLighting() && ctx.has(stage.output)) bind(lightingInput(stage).sampler, stage.output);
         p.set("uCameraPosition", ctx.view.cameraPosition)
             .set("uAmbient", ctx.scene.ambient)
             .set("uBackground", ctx.scene.background);
         ctx.common.bindLights(p);
+        // The G-buffer's emission clamp is counted here, per visible pixel (docs/stages.md).
+        ctx.common.hdrClamp.bind(p, "gbuffer", "uEmissionClampSlot");
+        ctx.common.hdrClamp.bind(p, "lighting");
         ctx.common.drawFullscreen();
       });
 }
 
-void addTransparentPass(FrameGraph& frame) {
+void addStageFallback(FrameGraph& frame, const std::string& fallback, const std::string& input, const std::string& output) {
+  if (fallback == "transparent") addTransparentPass(frame, input, output);
+  else throw Error(ExitCode::Internal, "no built-in fallback pass '" + fallback + "'");
+}
+
+void addTransparentPass(FrameGraph& frame, const std::string& input, const std::string& output) {
   frame.addPass("transparent",
       [&](PassBuilder& b) {
-        b.read(res::kColorHdr);
+        b.read(input);
         b.read(res::kDepth);
-        b.write(res::kColorHdr, frameTexture(frame, GL_RGBA16F));
+        b.write(output, frameTexture(frame, GL_RGBA16F));
       },
-      [](PassContext& ctx) {
-        const gl::Framebuffer& fbo = ctx.framebuffer("transparent", {res::kColorHdr}, res::kDepth);
+      [input, output](PassContext& ctx) {
+        // Blending composites over the opaque colour, so the output starts as a copy of the input
+        // (the input version stays readable: docs/stages.md "Colour versions").
+        const gl::Texture& src = ctx.texture(input);
+        glCopyImageSubData(src.id(), GL_TEXTURE_2D, 0, 0, 0, 0, ctx.texture(output).id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                           src.desc().width, src.desc().height, 1);
+        const gl::Framebuffer& fbo = ctx.framebuffer("transparent", {output}, res::kDepth);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, ctx.view.width, ctx.view.height);
         glEnable(GL_DEPTH_TEST);
@@ -115,26 +151,29 @@ void addTransparentPass(FrameGraph& frame) {
         glDisable(GL_CULL_FACE);
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-        gl::Program& p = ctx.programs.get({{"shading/surface.vert", "shading/forward.frag"}, {}, "forward"});
+        std::vector<std::string> defines;
+        if (ctx.common.hdrClamp.counting()) defines.push_back("HDR_CLAMP_COUNT");
+        gl::Program& p = ctx.programs.get({{"shading/surface.vert", "shading/forward.frag"}, defines, "forward"});
         p.set("uViewProj", ctx.view.viewProj)
             .set("uCameraPosition", ctx.view.cameraPosition)
             .set("uAmbient", ctx.scene.ambient);
         ctx.common.bindLights(p);
+        ctx.common.hdrClamp.bind(p, "transparent");
         ctx.sceneGpu.draw(p, SceneGpu::Filter::Transparent, true, ctx.view.cameraPosition);
       });
 }
 
-void addTonemapPass(FrameGraph& frame) {
+void addTonemapPass(FrameGraph& frame, const std::string& color) {
   frame.addPass("tonemap",
       [&](PassBuilder& b) {
-        b.read(res::kColorHdr);
+        b.read(color);
         b.write(res::kColorLdr, frameTexture(frame, GL_RGBA16F));
       },
-      [](PassContext& ctx) {
+      [color](PassContext& ctx) {
         ctx.beginFullscreen("tonemap", {res::kColorLdr});
         gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/tonemap.frag"}, {}, "tonemap"});
         p.use();
-        ctx.texture(res::kColorHdr).bind(0);
+        ctx.texture(color).bind(0);
         p.set("uColor", 0)
             .set("uExposure", ctx.params.getFloat("tonemap.exposure"))
             .set("uOperator", ctx.params.getEnum("tonemap.operator"))
@@ -143,17 +182,16 @@ void addTonemapPass(FrameGraph& frame) {
       });
 }
 
-std::string addAovPass(FrameGraph& frame, const std::string& aov) {
+std::string addAovPass(FrameGraph& frame, const std::string& aov, const std::string& color) {
   const std::string out = aovResource(aov);
   std::string source;      // resource the AOV copies, if any
   std::string define;
   float defaultValue = 0.0f;
-  if (aov == "color") { source = res::kColorHdr; define = "AOV_COLOR"; }
+  if (aov == "color") { source = color; define = "AOV_COLOR"; }
   else if (aov == "depth") define = "AOV_DEPTH";
   else if (aov == "normal") define = "AOV_NORMAL";
   else if (aov == "albedo") define = "AOV_ALBEDO";
-  else if (aov == "visibility" || aov == "ao") { source = aov; defaultValue = 1.0f; }
-  else if (aov == "indirect") { source = aov; defaultValue = 0.0f; }
+  else if (const StageInfo* stage = stageWithOutput(aov)) { source = aov; defaultValue = stage->neutral; }
   else throw Error(ExitCode::Internal, "no built-in AOV '" + aov + "'");
   frame.addPass(out,
       [&](PassBuilder& b) {

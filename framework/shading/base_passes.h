@@ -1,5 +1,6 @@
 // The framework's own passes: G-buffer, deferred lighting, transparent surfaces, tone mapping and
-// AOV export. Techniques add theirs between them (render/renderer.cpp fixes the order).
+// AOV export. Techniques add theirs between them, in the order of the stage table (frame/stages.h,
+// docs/stages.md); the renderer names the colour resource each pass reads and writes.
 #pragma once
 #include "gl/texture.h"
 
@@ -23,17 +24,29 @@ inline const std::string kMaterial = "gbuffer.material"; // rgb emissive, a roug
 inline const std::string kShadowPosition = "gbuffer.shadow_position"; // xyz shading point, w coverage
 inline const std::string kShadowNormal = "gbuffer.shadow_normal";     // xyz smooth normal, w coverage
 inline const std::string kDepth = "gbuffer.depth";
-inline const std::string kColorHdr = "color.hdr";
+inline const std::string kColorHdr = "color.hdr"; // the final colour when a pass writes it (see colorResource)
 inline const std::string kColorLdr = "color.ldr";       // tone-mapped, linear (sRGB applied on output)
 } // namespace res
 
+// The resource that holds colour version `version` ("lit" -> "color.lit") when a pass writes it;
+// a version no pass changes is an alias of the one before (Renderer::colorResource resolves it).
+std::string colorResource(const std::string& version);
+
 void addGBufferPass(FrameGraph& frame);
-void addLightingPass(FrameGraph& frame);
-void addTransparentPass(FrameGraph& frame); // only when the scene has transparent surfaces
-void addTonemapPass(FrameGraph& frame);
+// Deferred lighting into `output` (RGBA16F). Reads the outputs of the stages that feed it, as their
+// declared LightingEffect says. rectLightsAsPoints false: an arealight technique is active and adds
+// the rectangular lights itself, so they are skipped here.
+void addLightingPass(FrameGraph& frame, const std::string& output, bool rectLightsAsPoints);
+// The built-in pass a stage declares as its fallback (StageInfo::fallback), from colour `input` to
+// `output`. Error(Internal) for an unknown fallback name.
+void addStageFallback(FrameGraph& frame, const std::string& fallback, const std::string& input, const std::string& output);
+// Transparent surfaces over `input`, written to `output` (the stage's fallback "transparent").
+void addTransparentPass(FrameGraph& frame, const std::string& input, const std::string& output);
+void addTonemapPass(FrameGraph& frame, const std::string& color);
 // Adds the pass that writes "aov.<name>" (RGBA32F: value, mask) for a built-in AOV and returns the
-// resource name. Technique debug views write "aov.<view>" themselves.
-std::string addAovPass(FrameGraph& frame, const std::string& aov);
+// resource name; `color` is the final colour's resource (AOV color). Technique debug views write
+// "aov.<view>" themselves.
+std::string addAovPass(FrameGraph& frame, const std::string& aov, const std::string& color);
 std::string aovResource(const std::string& aov);
 
 } // namespace rtlab

@@ -1,10 +1,12 @@
 // GPU objects every frame shares, owned by the renderer for the context's lifetime: the empty
-// vertex array for full-screen triangles and the light buffer (shaders/common/lights.glsl).
+// vertex array for full-screen triangles, the light buffer (shaders/common/lights.glsl) and the HDR
+// clamp counters (shading/hdr_clamp.h).
 #pragma once
 #include "gl/objects.h"
 #include "gl/program.h"
 #include "gl/texture.h"
 #include "scene/scene.h"
+#include "shading/hdr_clamp.h"
 
 #include <cstdint>
 #include <string>
@@ -18,6 +20,7 @@ struct GpuCommon {
   gl::VertexArray emptyVao{"fullscreen"};
   gl::Buffer lights;
   int lightCount = 0;
+  HdrClampCounters hdrClamp;
 
   // Uploads the scene's lights into the uniform buffer (created once). Error(Input) for a scene
   // with more than kMaxLights lights.

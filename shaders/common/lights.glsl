@@ -25,7 +25,9 @@ uniform int uLightCount;
 
 // Irradiance arriving at p from light i (on a surface facing it), and the direction toward it.
 // Rectangular lights are approximated as a point at their center with intensity
-// radiance * area * cos(emission angle); the LTC technique replaces this approximation.
+// radiance * area * cos(emission angle). While an arealight technique runs, the lighting pass skips
+// rectangular lights (SKIP_RECT_LIGHTS) and the technique adds them (docs/stages.md); the
+// transparent fallback pass keeps this approximation for transparent surfaces.
 vec3 lightIrradiance(int i, vec3 p, out vec3 toLight) {
   GpuLight light = uLights[i];
   int type = int(light.positionType.w);

@@ -1,8 +1,11 @@
 #version 450 core
 // Transparent surfaces without a transparency technique: lit by every light (unshadowed), drawn
-// back to front per object with premultiplied over-blending (ONE, ONE_MINUS_SRC_ALPHA).
+// back to front per object with premultiplied over-blending (ONE, ONE_MINUS_SRC_ALPHA). The colour
+// is clamped to 65504 before the alpha weighting, so the blend onto a clamped opaque colour stays
+// finite too; each clamped fragment is counted (docs/stages.md "The HDR clamp").
 #include "material.glsl"
 #include "../common/brdf.glsl"
+#include "../common/hdr.glsl"
 #include "../common/lights.glsl"
 
 in vec3 vWorldPos;
@@ -27,5 +30,5 @@ void main() {
     color += evaluateBrdfCos(n, v, l, m.baseColor.rgb, m.metallic, m.roughness) * e;
   }
   float alpha = clamp(m.baseColor.a, 0.0, 1.0);
-  oColor = vec4(color * alpha, alpha);
+  oColor = vec4(clampHdr(color) * alpha, alpha);
 }

@@ -1,8 +1,10 @@
 #version 450 core
 // G-buffer: world position and linear depth, shading normal and material occlusion, geometric
 // normal and coverage, base color and metallic, emissive and roughness, and the shadow terminator
-// rule's shading point and smooth normal (docs/measuring.md). Normals face the camera.
+// rule's shading point and smooth normal (docs/measuring.md). Normals face the camera. Emission is
+// clamped to 65504 (docs/stages.md "The HDR clamp"); the lighting pass counts the clamped pixels.
 #include "material.glsl"
+#include "../common/hdr.glsl"
 #include "../common/terminator.glsl"
 
 in vec3 gWorldPos;
@@ -46,7 +48,7 @@ void main() {
   oNormal = vec4(n, m.occlusion);
   oGeometry = vec4(geometric, 1.0);
   oAlbedo = vec4(m.baseColor.rgb, m.metallic);
-  oMaterial = vec4(m.emissive, m.roughness);
+  oMaterial = vec4(min(m.emissive, vec3(kHalfMax)), m.roughness);
   oShadowPosition = vec4(shadingPoint, 1.0);
   oShadowNormal = vec4(smoothNormal, 1.0);
 }

@@ -2,8 +2,11 @@
 // Deferred direct lighting of every light from the G-buffer, plus emissive and a constant
 // ambient term scaled by the ao stage's output and the material occlusion, plus the indirect
 // stage's irradiance, also scaled by the ao stage's output. Light 0 is scaled by the shadow
-// stage's visibility; the others are unshadowed. AO never scales direct light.
+// stage's visibility; the others are unshadowed. AO never scales direct light. With
+// SKIP_RECT_LIGHTS (an arealight technique is active) rectangular lights are left to that
+// technique instead of being added as points. The result is clamped to 65504 (docs/stages.md).
 #include "../common/brdf.glsl"
+#include "../common/hdr.glsl"
 #include "../common/lights.glsl"
 
 in vec2 vUv;
@@ -25,6 +28,7 @@ uniform sampler2D uIndirect;
 uniform vec3 uCameraPosition;
 uniform vec3 uAmbient;
 uniform vec3 uBackground;
+uniform int uEmissionClampSlot; // the G-buffer pass's counter: its emission clamp is counted here
 
 layout(location = 0) out vec4 oColor;
 
@@ -32,7 +36,7 @@ void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec4 geometry = texelFetch(uGeometry, px, 0);
   if (geometry.w < 0.5) {
-    oColor = vec4(uBackground, 0.0);
+    oColor = vec4(clampHdr(uBackground), 0.0);
     return;
   }
   vec3 p = texelFetch(uPosition, px, 0).xyz;
@@ -45,8 +49,12 @@ void main() {
   float metallic = albedoMetal.a;
   float roughness = emissiveRough.a;
 
+  countHdrAtLimit(emissiveRough.rgb, uEmissionClampSlot);
   vec3 color = emissiveRough.rgb;
   for (int i = 0; i < uLightCount; ++i) {
+#ifdef SKIP_RECT_LIGHTS
+    if (int(uLights[i].positionType.w) == kLightRect) continue;
+#endif
     vec3 l;
     vec3 e = lightIrradiance(i, p, l);
 #ifdef HAS_VISIBILITY
@@ -63,5 +71,5 @@ void main() {
 #ifdef HAS_INDIRECT
   color += texelFetch(uIndirect, px, 0).rgb * diffuseAlbedo * kInvPi * ao;
 #endif
-  oColor = vec4(color, 1.0);
+  oColor = vec4(clampHdr(color), 1.0);
 }

@@ -126,6 +126,23 @@ TEST(CliRender, StatsFollowTheContract) {
   std::size_t sum = 0;
   for (const auto& res : j["resources"]) sum += res["bytes"].get<std::size_t>();
   EXPECT_EQ(sum, j["resource_bytes"].get<std::size_t>());
+  // Extension (docs/stages.md "The HDR clamp"): visibility alone needs no colour, so no pass clamped.
+  EXPECT_EQ(j["hdr_clamped"], nlohmann::json::array());
+}
+
+TEST(CliRender, StatsCountHdrClampedPixelsPerColourPass) {
+  const fs::path dir = testDir("stats_hdr");
+  const auto r = runProcess(RTLAB_BINARY, {"render", "--scene", "panes", "--size", "48x32", "--out",
+                                          (dir / "c.pfm").string(), "--stats", (dir / "s.json").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::ifstream in(dir / "s.json");
+  const auto j = nlohmann::json::parse(in);
+  std::vector<std::string> passes;
+  for (const auto& c : j.at("hdr_clamped")) {
+    passes.push_back(c.at("pass"));
+    EXPECT_EQ(c.at("pixels"), 0) << c; // nothing in panes is brighter than 65504
+  }
+  EXPECT_EQ(passes, (std::vector<std::string>{"gbuffer", "lighting", "transparent"}));
 }
 
 TEST(CliRender, SavedPresetRoundTrips) {

@@ -1,6 +1,7 @@
 // A reference gets what it declares and nothing else (app/reference_run.h, docs/measuring.md
 // "References per stage"): surface points of the frame's G-buffer only with SurfacePoints, the
-// scene's materials only with Materials; the process-wide registry holds the three built-ins.
+// scene's materials only with Materials, the colour before post only with PrePostColor; the
+// process-wide registry holds the three built-ins.
 #include "app/reference_run.h"
 #include "render_fixture.h"
 #include "util/error.h"
@@ -72,6 +73,36 @@ TEST(ReferenceInputs, SurfacePointsAndMaterialsOnlyWhenDeclared) {
     coloured = coloured || materials.materials[i].baseColor != Material{}.baseColor;
   }
   EXPECT_TRUE(coloured);
+}
+
+// A reference that declares PrePostColor receives the frame's colour before the post stage: with no
+// post technique that is the final linear colour, the AOV `color` of the same frame, pixel for
+// pixel (panes: the transparent layers are composited before post, so this is not just `lit`).
+TEST(ReferenceInputs, PrePostColorIsTheFramesColourBeforePost) {
+  const TestFrame f = makeTestFrame("panes", "", {}, 64, 40);
+  Image seen;
+  ReferenceEntry e = probe({FrameInput::PrePostColor});
+  e.compute = [&seen](const ReferenceFrame& frame, ReferenceStats&) {
+    EXPECT_THROW(frame.surfaces(), Error); // not declared
+    seen = frame.prePostColor();
+    return Image(1, 1, 1);
+  };
+  ReferenceStats stats;
+  TestRender probeRender = renderTestFrame(f, {"color"});
+  renderReferenceFrame(*probeRender.renderer, resolvedOf(f), e, 1, false, stats);
+  ASSERT_EQ(seen.width, 64);
+  ASSERT_EQ(seen.height, 40);
+  ASSERT_EQ(seen.channels, 3);
+
+  TestRender r = renderTestFrame(f, {"color"});
+  const Image color = r.renderer->readAov("color");
+  ASSERT_EQ(color.pixels.size(), seen.pixels.size());
+  double sum = 0;
+  for (std::size_t i = 0; i < color.pixels.size(); ++i) {
+    ASSERT_EQ(seen.pixels[i], color.pixels[i]) << "value " << i;
+    sum += seen.pixels[i];
+  }
+  EXPECT_GT(sum, 0.0); // a lit frame, not an empty image
 }
 
 TEST(ReferenceInputs, TheProcessRegistryHoldsTheBuiltins) {
