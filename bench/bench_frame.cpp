@@ -70,8 +70,8 @@ int main(int argc, char** argv) {
     // Warm-up beyond the 2 frames renderMeasured adds: JIT, allocation, caches.
     ResolvedFrame warm = frame;
     warm.options.frames = std::max(1, warmup - 2);
-    renderMeasured(renderer, warm, outputs, timing);
-    const FrameStats stats = renderMeasured(renderer, frame, outputs, timing);
+    renderMeasured(renderer, warm, outputs, timing, false);
+    const FrameStats stats = renderMeasured(renderer, frame, outputs, timing, false);
 
     std::printf("renderer: %s (%s), timing %s\n", context->info().renderer.c_str(), context->backendName().c_str(),
                 timingName(timing));

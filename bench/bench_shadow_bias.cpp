@@ -347,7 +347,7 @@ void runSetup(const LightSetup& setup, const FrameOptions& options, TimingMethod
     for (const char* key : {"shadow.constant_bias", "shadow.slope_bias", "shadow.normal_bias", "shadow.resolution", "shadow.depth_format", "shadow.cull_front"})
       frame.params.reset(key);
     for (const auto& [key, value] : row.set) frame.params.setText(key, value);
-    const FrameStats stats = renderMeasured(renderer, frame, outputs, timing);
+    const FrameStats stats = renderMeasured(renderer, frame, outputs, timing, false);
     truth.ls = shadowLightSpace(frame.scene, frame.params);
     Image dump;
     RowStats s = evaluate(renderer, truth, dumpDir.empty() ? nullptr : &dump);
