@@ -83,7 +83,27 @@ void FrameGraph::addComputePass(const std::string& name, const ComputeGrid& grid
   m_passes.push_back(std::move(pass));
 }
 
+void FrameGraph::importTexture(const std::string& name, gl::Texture& texture) {
+  if (m_imports.count(name)) graphError("'" + name + "' is imported twice");
+  if (!texture) graphError("imported texture '" + name + "' has no GL object");
+  m_imports[name].texture = &texture;
+}
+
+void FrameGraph::importBuffer(const std::string& name, gl::BufferObject& buffer) {
+  if (m_imports.count(name)) graphError("'" + name + "' is imported twice");
+  if (!buffer.id()) graphError("imported buffer '" + name + "' has no GL object");
+  m_imports[name].buffer = &buffer;
+}
+
+namespace {
+ResourceDesc importDesc(const ResourcePool::Import& i) {
+  if (i.texture) return i.texture->desc();
+  return i.buffer->desc();
+}
+} // namespace
+
 bool FrameGraph::isProduced(const std::string& resource) const {
+  if (m_imports.count(resource)) return true;
   for (const auto& p : m_passes)
     for (const auto& u : p.decl.m_uses)
       if (u.writes() && u.resource == resource) return true;
@@ -96,6 +116,11 @@ void FrameGraph::checkDescriptions() const {
     const ResourceDesc* desc;
   };
   std::map<std::string, First> first;
+  std::map<std::string, ResourceDesc> imported;
+  for (const auto& [name, i] : m_imports) {
+    imported.emplace(name, importDesc(i));
+    first.emplace(name, First{"(imported)", &imported.at(name)});
+  }
   for (const auto& p : m_passes)
     for (const auto& u : p.decl.m_uses) {
       if (!u.hasDesc) continue;
@@ -103,8 +128,9 @@ void FrameGraph::checkDescriptions() const {
       if (inserted) continue;
       const std::string diff = descDifference(u.desc, *it->second.desc);
       if (!diff.empty())
-        graphError("pass '" + p.name + "' describes '" + u.resource + "' differently from pass '" + it->second.pass +
-                   "' (" + diff + ")");
+        graphError("pass '" + p.name + "' describes '" + u.resource + "' differently from " +
+                 (m_imports.count(u.resource) ? std::string("the imported object") : "pass '" + it->second.pass + "'") +
+                 " (" + diff + ")");
     }
 }
 
@@ -112,6 +138,10 @@ void FrameGraph::checkDescriptions() const {
 void FrameGraph::checkReads() {
   std::set<std::string> written;
   std::map<std::string, ResourceDesc> descs;
+  for (const auto& [name, i] : m_imports) {
+    written.insert(name);
+    descs.emplace(name, importDesc(i));
+  }
   for (auto& p : m_passes) {
     if (!p.kept) continue;
     p.decl.m_absent.clear();
@@ -148,6 +178,12 @@ void FrameGraph::planBarriers(const std::vector<std::string>& targets) {
   std::map<std::string, GLbitfield> pending;
   std::map<std::string, bool> textures;
   m_barriers.clear();
+  // An imported object may have been written by an image store or a storage write in an earlier
+  // frame (or outside the graph): its first use this frame gets the barrier of its path.
+  for (const auto& [name, i] : m_imports) {
+    pending[name] = 0;
+    textures[name] = i.texture != nullptr;
+  }
   auto issue = [&](GLbitfield bits) {
     for (auto& [name, covered] : pending) covered |= bits;
   };
@@ -155,7 +191,7 @@ void FrameGraph::planBarriers(const std::vector<std::string>& targets) {
     p.barrier = 0;
     if (!p.kept) continue;
     for (const auto& u : p.decl.m_uses) {
-      if (u.hasDesc) textures[u.resource] = isTextureDesc(u.desc);
+      if (u.hasDesc && !m_imports.count(u.resource)) textures[u.resource] = isTextureDesc(u.desc);
       // Any later use, read or write, must see the incoherent write: the bit of the using path.
       auto it = pending.find(u.resource);
       if (it == pending.end()) continue;
@@ -212,13 +248,15 @@ void FrameGraph::compile(const std::vector<std::string>& targets) {
   for (const auto& p : m_passes) {
     if (!p.kept) continue;
     for (const auto& u : p.decl.m_uses)
-      if (u.hasDesc && std::find(live.begin(), live.end(), u.resource) == live.end()) live.push_back(u.resource);
+      if (u.hasDesc && !m_imports.count(u.resource) && std::find(live.begin(), live.end(), u.resource) == live.end())
+        live.push_back(u.resource);
   }
   m_ctx.pool.releaseExcept(live);
+  m_ctx.pool.setImports(m_imports);
   for (const auto& p : m_passes) {
     if (!p.kept) continue;
     for (const auto& u : p.decl.m_uses) {
-      if (!u.hasDesc) continue;
+      if (!u.hasDesc || m_imports.count(u.resource)) continue;
       if (isTextureDesc(u.desc)) m_ctx.pool.acquire(u.resource, std::get<gl::TextureDesc>(u.desc));
       else m_ctx.pool.acquire(u.resource, std::get<gl::BufferDesc>(u.desc));
     }

@@ -10,6 +10,7 @@
 #pragma once
 #include "frame/frame_view.h"
 #include "frame/pass_use.h"
+#include "frame/resource_pool.h"
 #include "gl/buffer.h"
 #include "gl/objects.h"
 #include "gl/texture.h"
@@ -18,6 +19,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -140,7 +142,17 @@ public:
   const FrameView& view() const { return m_ctx.view; }
   int width() const { return m_ctx.view.width; }
   int height() const { return m_ctx.view.height; }
-  // True if a pass added so far writes the resource.
+  // Lends a technique-owned texture or buffer to this frame under `name` (docs/frame-graph.md
+  // "Imported resources"): it counts as written before the first pass, passes declare their uses
+  // of it as of any resource (a write's description must equal the object's), the graph binds it
+  // and plans its barriers, but never allocates, reallocates or releases it. For data that outlives
+  // frames: a volume baked once per scene change, a history buffer. The object must live until
+  // run() returns. Error(Internal) for a name imported twice.
+  void importTexture(const std::string& name, gl::Texture& texture);
+  void importBuffer(const std::string& name, gl::BufferObject& buffer);
+  bool isImported(const std::string& name) const { return m_imports.count(name) != 0; }
+
+  // True if a pass added so far writes the resource (or it is imported).
   bool isProduced(const std::string& resource) const;
 
   // Culls to what `targets` need, checks the declarations, plans the barriers, then allocates.
@@ -196,6 +208,7 @@ private:
   std::string m_colorInput, m_colorOutput;
   std::vector<Pass> m_passes;
   std::vector<Barrier> m_barriers;
+  std::map<std::string, ResourcePool::Import> m_imports;
   GLbitfield m_endBarrier = 0;
   bool m_stateCheck;
 };

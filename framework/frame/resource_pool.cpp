@@ -36,12 +36,26 @@ void ResourcePool::releaseExcept(const std::vector<std::string>& keep) {
 
 gl::Texture* ResourcePool::find(const std::string& name) {
   auto it = m_textures.find(name);
-  return it == m_textures.end() ? nullptr : &it->second;
+  if (it != m_textures.end()) return &it->second;
+  auto imported = m_imports.find(name);
+  return imported == m_imports.end() ? nullptr : imported->second.texture;
+}
+
+void ResourcePool::setImports(const std::map<std::string, Import>& imports) {
+  std::map<std::string, GLuint> ids;
+  for (const auto& [name, i] : imports) ids[name] = i.texture ? i.texture->id() : i.buffer->id();
+  // A framebuffer may hold an imported texture; GL reuses names, so a new object under a name (or a
+  // name gone) must not meet a cached framebuffer of the old one.
+  if (ids != m_importIds) m_framebuffers.clear();
+  m_importIds = std::move(ids);
+  m_imports = imports;
 }
 
 gl::BufferObject* ResourcePool::findBuffer(const std::string& name) {
   auto it = m_buffers.find(name);
-  return it == m_buffers.end() ? nullptr : &it->second;
+  if (it != m_buffers.end()) return &it->second;
+  auto imported = m_imports.find(name);
+  return imported == m_imports.end() ? nullptr : imported->second.buffer;
 }
 
 const gl::Framebuffer& ResourcePool::framebuffer(const std::string& label, const std::vector<gl::Attachment>& colors,

@@ -25,10 +25,24 @@ public:
     m_framebuffers.clear();
     m_textures.clear();
     m_buffers.clear();
+    m_imports.clear();
+    m_importIds.clear();
   }
-  bool has(const std::string& name) const { return m_textures.count(name) != 0 || m_buffers.count(name) != 0; }
+  bool has(const std::string& name) const {
+    return m_textures.count(name) != 0 || m_buffers.count(name) != 0 || m_imports.count(name) != 0;
+  }
   gl::Texture* find(const std::string& name);
   gl::BufferObject* findBuffer(const std::string& name);
+
+  // Imported resources (docs/frame-graph.md "Imported resources"): objects a technique owns and
+  // lends to this frame's graph under a name. find()/findBuffer() see them; entries() does not
+  // count them (the technique reports them in ownedBytes()). Set once per frame by compile();
+  // a changed object under a name drops the cached framebuffers.
+  struct Import {
+    gl::Texture* texture = nullptr;
+    gl::BufferObject* buffer = nullptr;
+  };
+  void setImports(const std::map<std::string, Import>& imports);
 
   // A framebuffer over pool textures, cached until any pool texture is allocated or released
   // (GL reuses texture names, so a cached framebuffer must not outlive its attachments).
@@ -49,6 +63,8 @@ private:
   std::map<std::string, gl::Texture> m_textures;
   std::map<std::string, gl::BufferObject> m_buffers;
   std::map<std::string, gl::Framebuffer> m_framebuffers;
+  std::map<std::string, Import> m_imports;
+  std::map<std::string, GLuint> m_importIds; // object names of the last frame's imports
 };
 
 } // namespace rtlab

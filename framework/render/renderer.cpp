@@ -47,6 +47,8 @@ void Renderer::setScene(const Scene& scene) {
 }
 
 void Renderer::setTechniques(const std::vector<std::string>& orderedIds) {
+  // A technique's imported objects die with it: the pool must not hand them out afterwards.
+  m_pool.setImports({});
   for (auto it = m_techniques.begin(); it != m_techniques.end();) {
     if (std::find(orderedIds.begin(), orderedIds.end(), it->first) == orderedIds.end()) it = m_techniques.erase(it);
     else ++it;

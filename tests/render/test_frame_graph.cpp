@@ -88,6 +88,64 @@ TEST(FrameGraph, ComputeWritesVolumeThatFragmentPassSamples) {
   EXPECT_EQ(drainGlErrors(), 0);
 }
 
+// ---- an imported volume outlives frames: baked once, sampled in later frames ----
+
+TEST(FrameGraph, ImportedVolumeIsBakedOnceAndSampledInLaterFrames) {
+  testContext().makeCurrent();
+  drainGlErrors();
+  constexpr int n = 8;
+  GraphHarness h(n * n, n);
+  gl::TextureDesc volumeDesc = rgba16f(GL_TEXTURE_3D, n, n);
+  volumeDesc.depth = n;
+  gl::Texture volume(volumeDesc, "test.volume"); // owned by the "technique", not the pool
+  int bakes = 0;
+  auto frame = [&](bool bake) {
+    FrameGraph graph = h.graph();
+    graph.importTexture("volume", volume);
+    if (bake)
+      graph.addComputePass(
+          "volume.bake", ComputeGrid::of("volume"), [&](PassBuilder& b) { b.writeImage("volume", volumeDesc, 0); },
+          [&](PassContext& ctx) -> gl::Program& {
+            ++bakes;
+            return h.program({testShader("volume_fill.comp")}).set("uSize", ctx.grid);
+          });
+    graph.addPass(
+        "volume.sample",
+        [&](PassBuilder& b) {
+          b.read("volume");
+          b.write("unfolded", rgba16f(GL_TEXTURE_2D, n * n, n));
+        },
+        [&](PassContext& ctx) {
+          ctx.beginFullscreen("volume.sample", {"unfolded"});
+          gl::Program& p = h.program({"common/fullscreen.vert", testShader("volume_sample.frag")});
+          p.use();
+          ctx.texture("volume").bind(0);
+          p.set("uVolume", 0).set("uSize", n);
+          ctx.common.drawFullscreen();
+        });
+    h.runFrame(graph, {"unfolded"});
+    // The first use in a frame gets its path's barrier: the object may hold an earlier frame's stores.
+    EXPECT_EQ(graph.barrierBefore("volume.sample"), GLbitfield(GL_TEXTURE_FETCH_BARRIER_BIT));
+    return readLayer(*h.pool.find("unfolded"), 0, 0);
+  };
+  auto wrongTexels = [&](const std::vector<float>& pixels) {
+    int wrong = 0;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n * n; ++x) {
+        const glm::vec4 expected = glm::vec4(float(x % n), float(y), float(x / n), 16.0f) / 16.0f;
+        const float* p = &pixels[(std::size_t(y) * n * n + x) * 4];
+        if (glm::vec4(p[0], p[1], p[2], p[3]) != expected) ++wrong;
+      }
+    return wrong;
+  };
+  EXPECT_EQ(wrongTexels(frame(true)), 0);
+  EXPECT_EQ(wrongTexels(frame(false)), 0) << "the second frame samples what the first baked";
+  EXPECT_EQ(wrongTexels(frame(false)), 0);
+  EXPECT_EQ(bakes, 1);
+  for (const auto& e : h.pool.entries()) EXPECT_NE(e.name, "volume") << "an imported object is not pool memory";
+  EXPECT_EQ(drainGlErrors(), 0);
+}
+
 // ---- an atomic-counter append in one pass, read as storage buffers in the next ----
 
 TEST(FrameGraph, AtomicAppendIsReadByTheNextPassAfterAStorageBarrier) {
@@ -383,6 +441,30 @@ TEST(FrameGraph, CulledComputePassIsNotRun) {
   ASSERT_EQ(passes.size(), 2u);
   EXPECT_TRUE(passes[0].compute);
   EXPECT_FALSE(passes[0].kept);
+}
+
+TEST(FrameGraph, RefusesAWriteThatRedescribesAnImportAndADoubleImport) {
+  testContext().makeCurrent();
+  GraphHarness h(8, 8);
+  const gl::TextureDesc d = rgba16f(GL_TEXTURE_2D, 8, 8);
+  gl::Texture owned(d, "test.owned");
+  {
+    FrameGraph graph = h.graph();
+    graph.importTexture("owned", owned);
+    graph.addPass("resize", [&](PassBuilder& b) { b.write("owned", rgba16f(GL_TEXTURE_2D, 4, 8)); }, [](PassContext&) {});
+    EXPECT_EQ(compileError(graph, {"owned"}),
+              "frame graph: pass 'resize' describes 'owned' differently from the imported object (size 4x8 vs 8x8)");
+  }
+  {
+    FrameGraph graph = h.graph();
+    graph.importTexture("owned", owned);
+    try {
+      graph.importTexture("owned", owned);
+      ADD_FAILURE() << "a second import of one name was accepted";
+    } catch (const Error& e) {
+      EXPECT_STREQ(e.what(), "frame graph: 'owned' is imported twice");
+    }
+  }
 }
 
 } // namespace
