@@ -18,6 +18,7 @@ FrameStats renderMeasured(Renderer& renderer, const ResolvedFrame& frame, const 
     if (i >= warmup) stats.addFrame(timer, errors);
   }
   stats.setResources(renderer.resources());
+  stats.setCounters(renderer.counters());
   if (countHdrClamp) {
     FrameOutputs counted = outputs;
     counted.countHdrClamped = true;

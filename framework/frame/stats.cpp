@@ -66,6 +66,10 @@ nlohmann::ordered_json FrameStats::toJson() const {
   auto clampArray = nlohmann::ordered_json::array();
   for (const auto& c : m_hdrClamped) clampArray.push_back({{"pass", c.pass}, {"pixels", c.pixels}});
   j["hdr_clamped"] = clampArray;
+  auto counterArray = nlohmann::ordered_json::array();
+  for (const auto& c : m_counters)
+    counterArray.push_back({{"technique", c.technique}, {"name", c.name}, {"value", c.value}});
+  j["counters"] = counterArray;
   return j;
 }
 

@@ -23,6 +23,12 @@ struct HdrClampCount {
   std::uint64_t pixels = 0;
 };
 
+// A technique's count about the last measured frame (Technique::counters()).
+struct CounterValue {
+  std::string technique, name;
+  double value = 0;
+};
+
 class FrameStats {
 public:
   // Adds one measured frame.
@@ -31,6 +37,8 @@ public:
   // The HDR clamp counts of the last measured frame (Renderer::readHdrClamped).
   void setHdrClamped(std::vector<HdrClampCount> counts) { m_hdrClamped = std::move(counts); }
   const std::vector<HdrClampCount>& hdrClamped() const { return m_hdrClamped; }
+  void setCounters(std::vector<CounterValue> counters) { m_counters = std::move(counters); }
+  const std::vector<CounterValue>& counters() const { return m_counters; }
 
   struct PassSummary {
     std::string name, technique;
@@ -46,7 +54,7 @@ public:
   double techniqueMs(const std::string& technique) const;
 
   // Fields that depend only on what was measured: frames, frame_ms, passes, resources,
-  // resource_bytes, gl_errors, hdr_clamped. The caller adds the run's description (schema, version, ...).
+  // resource_bytes, gl_errors, hdr_clamped, counters. The caller adds the run's description (schema, version, ...).
   nlohmann::ordered_json toJson() const;
 
 private:
@@ -58,6 +66,7 @@ private:
   std::vector<double> m_frameMs;
   std::vector<ResourceUse> m_resources;
   std::vector<HdrClampCount> m_hdrClamped;
+  std::vector<CounterValue> m_counters;
   int m_glErrors = 0;
 };
 

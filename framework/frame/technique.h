@@ -28,6 +28,13 @@ struct TechniqueInfo {
   std::vector<DebugView> debugViews;
 };
 
+// A count a technique reports about its last frame (e.g. fragments an A-buffer dropped), written
+// to the --stats JSON as {"technique", "name", "value"} (docs/cli.md).
+struct TechniqueCounter {
+  std::string name;  // "dropped_fragments": lower-case, without the technique's id
+  double value = 0;
+};
+
 class Technique {
 public:
   virtual ~Technique() = default;
@@ -43,6 +50,9 @@ public:
   virtual void sceneChanged(const SceneChange& /*change*/) {}
   // Technique-owned GPU memory outside the frame graph's pool (reported in stats).
   virtual std::size_t ownedBytes() const { return 0; }
+  // Counts about the last frame, for stats. Called only when stats are written, after the measured
+  // frames, so it may read a GPU buffer back (a stall that no timed frame sees).
+  virtual std::vector<TechniqueCounter> counters() const { return {}; }
 };
 
 } // namespace rtlab

@@ -223,6 +223,13 @@ SurfaceData Renderer::readSurfaces() const {
 
 const gl::Texture* Renderer::resource(const std::string& name) { return m_pool.find(name); }
 
+std::vector<CounterValue> Renderer::counters() const {
+  std::vector<CounterValue> out;
+  for (const auto& id : m_order)
+    for (const auto& c : m_techniques.at(id)->counters()) out.push_back(CounterValue{id, c.name, c.value});
+  return out;
+}
+
 std::vector<ResourceUse> Renderer::resources() const {
   std::vector<ResourceUse> out;
   for (const auto& e : m_pool.entries()) out.push_back(ResourceUse{e.name, e.bytes});

@@ -74,6 +74,9 @@ public:
   const gl::Texture* resource(const std::string& name);
 
   std::vector<ResourceUse> resources() const;
+  // Every active technique's counters about the last frame, in stage order (Technique::counters();
+  // may wait for the GPU: for stats only).
+  std::vector<CounterValue> counters() const;
   // Passes of the last frame (kept or culled).
   struct PassInfo {
     std::string name, technique;

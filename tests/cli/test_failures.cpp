@@ -128,6 +128,8 @@ TEST(CliRender, StatsFollowTheContract) {
   EXPECT_EQ(sum, j["resource_bytes"].get<std::size_t>());
   // Extension (docs/stages.md "The HDR clamp"): visibility alone needs no colour, so no pass clamped.
   EXPECT_EQ(j["hdr_clamped"], nlohmann::json::array());
+  // Extension (docs/cli.md): shadow_map reports no counters.
+  EXPECT_EQ(j["counters"], nlohmann::json::array());
 }
 
 TEST(CliRender, StatsCountHdrClampedPixelsPerColourPass) {
