@@ -89,7 +89,8 @@ void Renderer::render(const ParamSet& params, int width, int height, const Frame
   graph.run(timer);
   timer.endFrame();
   m_lastPasses.clear();
-  for (const auto& p : graph.passes()) m_lastPasses.push_back(PassInfo{p.name, p.technique, p.kept});
+  for (const auto& p : graph.passes())
+    m_lastPasses.push_back(PassInfo{p.name, p.technique, p.kept, p.compute, graph.barrierBefore(p.name)});
 }
 
 std::string Renderer::addStagePasses(FrameGraph& graph) {

@@ -81,6 +81,8 @@ public:
   struct PassInfo {
     std::string name, technique;
     bool kept;
+    bool compute = false;
+    GLbitfield barrier = 0; // the glMemoryBarrier bits the graph issued right before it
   };
   const std::vector<PassInfo>& lastPasses() const { return m_lastPasses; }
   gl::ProgramCache& programs() { return m_programs; }

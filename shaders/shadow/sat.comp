@@ -7,7 +7,8 @@
 // integer, which uScale guarantees for every box a lookup makes (momentSatScale,
 // techniques/common/shadow/moment_map.cpp). A float table instead rounds its running sums, whose size
 // grows with the map, and a small box's mean then loses its low digits (techniques/vssm/README.md,
-// "Speckles"). FORMAT is the image format (rg32ui or rgba32ui).
+// "Speckles"). FORMAT is the image format (rg32ui or rgba32ui). Each direction is one compute pass of
+// the frame graph, which binds the table to image unit 0 and issues the barriers between them.
 layout(local_size_x = 64) in;
 layout(binding = 0) uniform sampler2D uInput;
 layout(binding = 0, FORMAT) uniform uimage2D uTable;

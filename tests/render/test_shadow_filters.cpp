@@ -144,5 +144,38 @@ TEST(MomentShadows, PointLightIsRefusedWithAUsageError) {
   }
 }
 
+// The moment map's summed-area table is built by two compute passes of the frame graph
+// (techniques/common/shadow/moment_map.cpp): row scans into "<id>.sat" as a storage image, then
+// column scans in place, and the graph, not the passes, issues the barriers: image access before
+// the column scans (they load what the row scans stored), texture fetch before the visibility pass
+// (it samples the table), and none before the row scans (the moments are an attachment).
+TEST(MomentShadows, SummedAreaTableIsBuiltByComputePassesWithPlannedBarriers) {
+  for (const char* technique : {"vssm", "msm"}) {
+    const std::string id = technique;
+    TestFrame f = makeTestFrame("contact", id, {}, 32, 32);
+    TestRender r = renderTestFrame(f, {"visibility"});
+    EXPECT_EQ(r.glErrors, 0) << id;
+    const std::vector<Renderer::PassInfo>& passes = r.renderer->lastPasses();
+    auto find = [&](const std::string& name) {
+      for (std::size_t i = 0; i < passes.size(); ++i)
+        if (passes[i].name == name) return i;
+      ADD_FAILURE() << id << ": no pass " << name;
+      return passes.size();
+    };
+    const std::size_t rows = find(id + ".sat.rows"), columns = find(id + ".sat.columns"),
+                      visibility = find(id + ".visibility");
+    if (rows == passes.size() || columns == passes.size() || visibility == passes.size()) continue;
+    EXPECT_LT(rows, columns) << id;
+    EXPECT_LT(columns, visibility) << id;
+    for (std::size_t i : {rows, columns}) {
+      EXPECT_TRUE(passes[i].kept) << passes[i].name;
+      EXPECT_TRUE(passes[i].compute) << passes[i].name;
+    }
+    EXPECT_EQ(passes[rows].barrier, 0u) << id;
+    EXPECT_EQ(passes[columns].barrier, GLbitfield(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT)) << id;
+    EXPECT_EQ(passes[visibility].barrier, GLbitfield(GL_TEXTURE_FETCH_BARRIER_BIT)) << id;
+  }
+}
+
 } // namespace
 } // namespace rtlab

@@ -91,26 +91,28 @@ void addMomentMapPasses(FrameGraph& frame, const MomentMapConfig& config) {
         ctx.sceneGpu.draw(p, SceneGpu::Filter::Opaque, false);
       });
 
-  frame.addPass(sat,
+  // The table in two compute passes of shaders/shadow/sat.comp, one invocation per line: row scans
+  // from the moments into the table, then column scans in place. The graph binds the table to image
+  // unit 0 and plans the barriers (docs/frame-graph.md "Barriers"): image access before the column
+  // scans, texture fetch before the first pass that samples the table.
+  const glm::vec4 satOffset(config.satOffset ? 0.5f : 0.0f);
+  const auto satProgram = [=](PassContext& ctx, int axis) -> gl::Program& {
+    gl::Program& p = ctx.programs.get(
+        {{"shadow/sat.comp"}, {"AXIS " + std::to_string(axis), "FORMAT " + satImageFormat}, "sat"});
+    return p.set("uSize", size).set("uOffset", satOffset).set("uScale", momentSatScale(ctx.params, config));
+  };
+  const ComputeGrid lines = ComputeGrid::fixed({size, 1, 1});
+  frame.addComputePass(sat + ".rows", lines,
       [&](PassBuilder& b) {
         b.read(moments);
-        b.write(sat, satDesc);
+        b.writeImage(sat, satDesc, 0);
       },
-      [=](PassContext& ctx) {
-        const glm::vec4 offset(config.satOffset ? 0.5f : 0.0f);
-        const float scale = momentSatScale(ctx.params, config);
-        glBindImageTexture(0, ctx.texture(sat).id(), 0, GL_FALSE, 0, GL_READ_WRITE, satDesc.format);
-        for (int axis = 0; axis < 2; ++axis) {
-          gl::Program& p = ctx.programs.get(
-              {{"shadow/sat.comp"}, {"AXIS " + std::to_string(axis), "FORMAT " + satImageFormat}, "sat"});
-          p.use();
-          ctx.texture(moments).bind(0);
-          p.set("uInput", 0).set("uSize", size).set("uOffset", offset).set("uScale", scale);
-          glDispatchCompute(GLuint((size + 63) / 64), 1, 1);
-          glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        }
-        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, satDesc.format);
+      [=](PassContext& ctx) -> gl::Program& {
+        ctx.texture(moments).bind(0);
+        return satProgram(ctx, 0).set("uInput", 0);
       });
+  frame.addComputePass(sat + ".columns", lines, [&](PassBuilder& b) { b.readWriteImage(sat, 0); },
+      [=](PassContext& ctx) -> gl::Program& { return satProgram(ctx, 1); });
 }
 
 void addMomentView(FrameGraph& frame, const std::string& technique, const std::string& view) {

@@ -27,7 +27,8 @@ class ParamSet;
 // "<id>.max_penumbra" and "shadow.resolution") fits in a signed 32-bit integer.
 float momentSatScale(const ParamSet& params, const MomentMapConfig& config);
 
-// Adds "<id>.moments" and "<id>.sat" passes (resources of the same names).
+// Adds the fragment pass "<id>.moments" (resource of the same name) and the compute passes
+// "<id>.sat.rows" and "<id>.sat.columns", which build the table "<id>.sat" as a storage image.
 void addMomentMapPasses(FrameGraph& frame, const MomentMapConfig& config);
 // Binds "<id>.sat" as uSat (and uSatOffset, uSatScale) at `unit` for shaders/shadow/common/moments.glsl.
 void bindMomentSat(PassContext& ctx, gl::Program& program, const MomentMapConfig& config, int unit);
