@@ -45,7 +45,8 @@ glm::vec3 lightIrradiance(const Light& light, const glm::vec3& p, glm::vec3& toL
   if (light.type == LightType::Spot) {
     attenuation *= smoothstep(std::cos(light.outerConeAngle), std::cos(light.innerConeAngle), cosEmit);
   } else if (light.type == LightType::Rect) {
-    attenuation *= std::max(cosEmit, 0.0f) * light.width * light.height;
+    const float facing = light.twoSided ? std::abs(cosEmit) : std::max(cosEmit, 0.0f);
+    attenuation *= facing * light.width * light.height;
   }
   return radiant * attenuation;
 }

@@ -103,6 +103,7 @@ Light areaLight(const tinygltf::Node& node, int index, const Frame& f) {
   l.width = static_cast<float>(number(a, "width", 1.0));
   l.height = static_cast<float>(number(a, "height", 1.0));
   l.intensity = static_cast<float>(number(a, "intensity", 1.0));
+  l.twoSided = a.Has("two_sided") && a.Get("two_sided").Get<bool>();
   if (a.Has("color")) {
     const auto& c = a.Get("color");
     for (int k = 0; k < 3; ++k) l.color[k] = static_cast<float>(c.Get(k).GetNumberAsDouble());

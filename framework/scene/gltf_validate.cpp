@@ -218,6 +218,7 @@ private:
       if (!v.IsNumber() || !(v.GetNumberAsDouble() >= 0.0) || !std::isfinite(v.GetNumberAsDouble()))
         bad(who + " rtlab_area_light.intensity must be a non-negative number");
     }
+    if (a.Has("two_sided") && !a.Get("two_sided").IsBool()) bad(who + " rtlab_area_light.two_sided must be true or false");
     if (a.Has("color")) {
       const auto& c = a.Get("color");
       bool ok = c.IsArray() && c.ArrayLen() == 3;

@@ -94,6 +94,7 @@ struct Light {
   float width = 0.0f, height = 0.0f; // rect: size along `right` and `up`
   glm::vec3 right{1, 0, 0};      // rect: world axes of the rectangle; it emits along `direction`
   glm::vec3 up{0, 0, 1};
+  bool twoSided = false;         // rect: emits from both faces (light<N>.two_sided), else along `direction` only
 };
 
 // Perspective camera. Aspect always comes from the frame size.

@@ -70,6 +70,8 @@ std::vector<ParamSpec> sceneParamSpecs(const Scene& scene) {
                           .withHelp("Width (along its right axis)" + what));
       add(ParamSpec::real(p + "height", "Height", l.height, 0.0, maxSize).withUnit("scene units")
                           .withHelp("Height (along its up axis)" + what));
+      add(ParamSpec::boolean(p + "two_sided", "Two-sided", l.twoSided)
+                          .withHelp("Emits from both faces" + what + "; false = along its direction only"));
     }
   }
   const Camera& c = scene.camera;
@@ -106,6 +108,7 @@ void applySceneParams(const ParamSet& params, Scene& scene) {
     if (params.has(p + "angle")) l.angle = params.getFloat(p + "angle");
     if (params.has(p + "width")) l.width = params.getFloat(p + "width");
     if (params.has(p + "height")) l.height = params.getFloat(p + "height");
+    if (params.has(p + "two_sided")) l.twoSided = params.getBool(p + "two_sided");
   }
   Camera& c = scene.camera;
   c.position = params.getVec3("camera.position");

@@ -35,7 +35,7 @@ void GpuCommon::uploadLights(const Scene& scene) {
     g.positionType = glm::vec4(l.position, typeCode(l.type));
     g.directionRange = glm::vec4(glm::normalize(l.direction), l.range);
     g.colorIntensity = glm::vec4(l.color, l.intensity);
-    g.spotCos = glm::vec4(std::cos(l.innerConeAngle), std::cos(l.outerConeAngle), 0, 0);
+    g.spotCos = glm::vec4(std::cos(l.innerConeAngle), std::cos(l.outerConeAngle), l.twoSided ? 1.0f : 0.0f, 0);
     g.rectRight = glm::vec4(l.right, l.width);
     g.rectUp = glm::vec4(l.up, l.height);
     data.push_back(g);

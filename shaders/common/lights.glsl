@@ -12,7 +12,7 @@ struct GpuLight {
   vec4 positionType;    // xyz position, w type
   vec4 directionRange;  // xyz direction light travels, w range (0 = infinite)
   vec4 colorIntensity;  // rgb color, w intensity
-  vec4 spotCos;         // x cos(inner), y cos(outer)
+  vec4 spotCos;         // x cos(inner), y cos(outer), z rect: 1 two-sided, 0 front face only
   vec4 rectRight;       // xyz right axis, w width
   vec4 rectUp;          // xyz up axis, w height
 };
@@ -25,7 +25,7 @@ uniform int uLightCount;
 
 // Irradiance arriving at p from light i (on a surface facing it), and the direction toward it.
 // Rectangular lights are approximated as a point at their center with intensity
-// radiance * area * cos(emission angle). While an arealight technique runs, the lighting pass skips
+// radiance * area * cos(emission angle) (|cos| for a two-sided one). While an arealight technique runs, the lighting pass skips
 // rectangular lights (SKIP_RECT_LIGHTS) and the technique adds them (docs/stages.md); the
 // transparent fallback pass keeps this approximation for transparent surfaces.
 vec3 lightIrradiance(int i, vec3 p, out vec3 toLight) {
@@ -49,7 +49,8 @@ vec3 lightIrradiance(int i, vec3 p, out vec3 toLight) {
   if (type == kLightSpot) {
     attenuation *= smoothstep(light.spotCos.y, light.spotCos.x, cosEmit);
   } else if (type == kLightRect) {
-    attenuation *= max(cosEmit, 0.0) * light.rectRight.w * light.rectUp.w;
+    float facing = light.spotCos.z > 0.5 ? abs(cosEmit) : max(cosEmit, 0.0);
+    attenuation *= facing * light.rectRight.w * light.rectUp.w;
   }
   return radiant * attenuation;
 }

@@ -95,6 +95,9 @@ TEST(ReferenceLights, IrradianceFollowsLightsGlsl) {
   rect.intensity = 10.0f;
   EXPECT_NEAR(lightIrradiance(rect, {0, 0, 0}, l).x, 10.0f * 1.0f / 4.0f, 1e-5f); // L * area * cos / d^2
   EXPECT_EQ(lightIrradiance(rect, {0, 3, 0}, l).x, 0.0f);                         // behind it
+  rect.twoSided = true;                                                           // light<N>.two_sided
+  EXPECT_NEAR(lightIrradiance(rect, {0, 3, 0}, l).x, 10.0f * 1.0f / 1.0f, 1e-5f); // the back face: |cos| = 1, d = 1
+  EXPECT_NEAR(lightIrradiance(rect, {0, 0, 0}, l).x, 10.0f * 1.0f / 4.0f, 1e-5f); // the front face unchanged
 }
 
 TEST(ReferenceLights, ShadowRaysReachTheLightShape) {

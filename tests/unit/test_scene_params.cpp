@@ -100,7 +100,9 @@ TEST(SceneParamKeys, ExistOnlyWhereTheyApply) {
   EXPECT_TRUE(has("light2.radius"));
   for (const char* k : {"light2.angle", "light2.width", "light2.height"}) EXPECT_FALSE(has(k)) << k;
   // rectangular
-  for (const char* k : {"light3.width", "light3.height", "light3.position", "light3.direction"}) EXPECT_TRUE(has(k)) << k;
+  for (const char* k : {"light3.width", "light3.height", "light3.two_sided", "light3.position", "light3.direction"})
+    EXPECT_TRUE(has(k)) << k;
+  for (const char* k : {"light0.two_sided", "light1.two_sided", "light2.two_sided"}) EXPECT_FALSE(has(k)) << k;
   for (const char* k : {"light3.radius", "light3.angle"}) EXPECT_FALSE(has(k)) << k;
   // camera; nothing for lights that do not exist
   for (const char* k : {"camera.position", "camera.target", "camera.fov"}) EXPECT_TRUE(has(k)) << k;
@@ -162,6 +164,7 @@ TEST(SceneParamApply, WritesValuesAndNormalizesDirections) {
   set.setAssignment("light2.radius=0");
   set.setAssignment("light3.width=3");
   set.setAssignment("light3.height=0.5");
+  set.setAssignment("light3.two_sided=on");
   set.setAssignment("light3.position=0,2,1");
   set.setAssignment("camera.position=0,2,8");
   set.setAssignment("camera.target=0,0.5,0");
@@ -179,6 +182,7 @@ TEST(SceneParamApply, WritesValuesAndNormalizesDirections) {
   EXPECT_NEAR(glm::length(s.lights[2].direction), 1.0f, 1e-6f);
   EXPECT_EQ(s.lights[3].width, 3.0f);
   EXPECT_EQ(s.lights[3].height, 0.5f);
+  EXPECT_TRUE(s.lights[3].twoSided);
   expectNear(s.lights[3].position, {0, 2, 1});
   expectNear(s.camera.position, {0, 2, 8});
   expectNear(s.camera.target, {0, 0.5f, 0});

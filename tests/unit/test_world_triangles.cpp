@@ -111,6 +111,7 @@ TEST(SceneChange, SameLightsComparesEveryFieldExactly) {
   EXPECT_TRUE(changed([](Light& x) { x.height = 2.0f; }));
   EXPECT_TRUE(changed([](Light& x) { x.right = glm::vec3(0, 1, 0); }));
   EXPECT_TRUE(changed([](Light& x) { x.up = glm::vec3(0, 1, 0); }));
+  EXPECT_TRUE(changed([](Light& x) { x.twoSided = true; }));
   EXPECT_TRUE(changed([](Light& x) { x.range = 5.0f; }));
   EXPECT_TRUE(changed([](Light& x) { x.innerConeAngle = 0.1f; }));
   EXPECT_TRUE(changed([](Light& x) { x.outerConeAngle = 0.2f; }));
