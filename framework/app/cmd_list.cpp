@@ -65,6 +65,19 @@ int runList(int argc, char** argv) {
       else sj["neutral"] = nullptr; // colour stages: identity, their version aliases the input
       sj["color_version"] = s.colorVersion;
       sj["fallback"] = s.fallback;
+      if (s.aov.name.empty()) sj["aov"] = nullptr;
+      else {
+        nlohmann::ordered_json aj;
+        aj["name"] = s.aov.name;
+        aj["channels"] = s.aov.channels;
+        aj["rule"] = aovRuleName(s.aov.rule);
+        switch (s.aov.rule) { // docs/stages.md "Stage AOVs"
+        case AovRule::OutputOrNeutral: aj["neutral"] = s.neutral; break;
+        case AovRule::TechniqueResource: aj["neutral"] = s.aov.neutral; break;
+        case AovRule::ColorVersionCoverage: aj["neutral"] = nullptr; break; // always the colour version
+        }
+        sj["aov"] = aj;
+      }
       stageArray.push_back(sj);
     }
     j["stages"] = stageArray;

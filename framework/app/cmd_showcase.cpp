@@ -122,7 +122,7 @@ int runShowcase(int argc, char** argv) {
     if (!job.technique.empty()) {
       const auto& info = registry.get(job.technique).info;
       const StageInfo* stage = findStage(info.stage);
-      if (stage->output != "color") aovs.push_back(stage->output);
+      if (!stage->aov.name.empty()) aovs.push_back(stage->aov.name); // the stage's AOV (docs/stages.md "Stage AOVs")
       for (const auto& v : info.debugViews) aovs.push_back(v.name);
       shownParams = stage->params;
       shownParams.insert(shownParams.end(), info.params.begin(), info.params.end());

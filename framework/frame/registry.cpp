@@ -1,5 +1,6 @@
 #include "frame/registry.h"
 
+#include "frame/aovs.h"
 #include "frame/stages.h"
 #include "util/error.h"
 #include "util/suggest.h"
@@ -26,9 +27,14 @@ void TechniqueRegistry::add(TechniqueEntry entry) {
   for (const auto& p : info.params)
     if (p.key.rfind(info.id + ".", 0) != 0)
       throw Error(ExitCode::Internal, "technique '" + info.id + "' declares key '" + p.key + "' outside its prefix");
-  for (const auto& v : info.debugViews)
-    if (v.name.rfind(info.id + ".", 0) != 0)
+  // A debug view is named `<id>.<view>`, or exactly `<id>` when it is the technique's own output
+  // (the AOV `bloom` of the technique bloom); never like a built-in AOV.
+  for (const auto& v : info.debugViews) {
+    if (v.name != info.id && v.name.rfind(info.id + ".", 0) != 0)
       throw Error(ExitCode::Internal, "technique '" + info.id + "' declares debug view '" + v.name + "' outside its prefix");
+    if (isBuiltinAov(v.name))
+      throw Error(ExitCode::Internal, "technique '" + info.id + "' declares debug view '" + v.name + "', a built-in AOV");
+  }
   m_entries.push_back(std::move(entry));
 }
 

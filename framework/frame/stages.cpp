@@ -27,8 +27,8 @@ const std::vector<StageInfo>& stages() {
       st.order = int(s.size());
       s.push_back(std::move(st));
     };
-    //        id, order, exclusive, predicate, output, neutral, lighting effect, colour version, fallback
-    StageInfo shadow{"shadow", 0, true, StagePredicate::Always, "visibility", 1.0f, LightingEffect::MultiplyLight0Direct, "", "", {}};
+    //        id, order, exclusive, predicate, output, neutral, lighting effect, colour version, fallback, params, AOV
+    StageInfo shadow{"shadow", 0, true, StagePredicate::Always, "visibility", 1.0f, LightingEffect::MultiplyLight0Direct, "", "", {}, {}};
     shadow.params = {
         ParamSpec::integer("shadow.resolution", "Map resolution", 2048, 256, 4096)
             .logScale().withUnit("texels").withFlags(kParamRealloc)
@@ -44,17 +44,28 @@ const std::vector<StageInfo>& stages() {
         ParamSpec::boolean("shadow.cull_front", "Cull front faces", false)
             .withHelp("Render back faces only into the map (closed meshes only; single-sided planes then cast no shadow)"),
     };
+    shadow.aov = {"visibility", 1, "fraction of light 0 visible from the surface point (1 without a shadow technique)",
+                  AovRule::OutputOrNeutral};
     add(shadow);
-    StageInfo ao{"ao", 0, true, StagePredicate::Always, "ao", 1.0f, LightingEffect::MultiplyAmbientIndirect, "", "", {}};
+    StageInfo ao{"ao", 0, true, StagePredicate::Always, "ao", 1.0f, LightingEffect::MultiplyAmbientIndirect, "", "", {}, {}};
     ao.params = {ParamSpec::real("ao.radius", "AO radius", 0.5, 0.01, 10.0)
                      .logScale().withUnit("scene units")
                      .withHelp("Occluders farther than this from the point do not occlude (every AO technique and the reference)")};
+    ao.aov = {"ao", 1, "ambient occlusion within ao.radius (1 without an AO technique)", AovRule::OutputOrNeutral};
     add(ao);
-    add(StageInfo{"indirect", 0, true, StagePredicate::Always, "indirect", 0.0f, LightingEffect::AddIndirect, "", "", {}});
-    add(StageInfo{"arealight", 0, true, StagePredicate::RectLight, "color", 0.0f, LightingEffect::ReplaceRectLights, "lit", "", {}});
+    add(StageInfo{"indirect", 0, true, StagePredicate::Always, "indirect", 0.0f, LightingEffect::AddIndirect, "", "", {},
+                  {"indirect", 3, "one-bounce diffuse irradiance (0 without an indirect technique)", AovRule::OutputOrNeutral}});
+    add(StageInfo{"arealight", 0, true, StagePredicate::RectLight, "color", 0.0f, LightingEffect::ReplaceRectLights, "lit", "", {},
+                  {"arealight", 3,
+                   "radiance of the rectangular lights, unshadowed (0 without a rectangular light; needs an arealight "
+                   "technique where there is one)",
+                   AovRule::TechniqueResource, 0.0f}});
     add(StageInfo{"transparency", 0, true, StagePredicate::TransparentMaterial, "color", 0.0f, LightingEffect::TransformColor,
-                  "pre_post", "transparent", {}});
-    add(StageInfo{"post", 0, false, StagePredicate::Always, "color", 0.0f, LightingEffect::TransformColor, "hdr", "", {}});
+                  "pre_post", "transparent", {},
+                  {"transparency", 3,
+                   "linear colour after the transparency stage (pre_post); A = 1 where a surface or a transparent layer covers",
+                   AovRule::ColorVersionCoverage, 0.0f}});
+    add(StageInfo{"post", 0, false, StagePredicate::Always, "color", 0.0f, LightingEffect::TransformColor, "hdr", "", {}, {}});
     return s;
   }();
   return list;
@@ -66,10 +77,19 @@ const StageInfo* findStage(const std::string& id) {
   return nullptr;
 }
 
-const StageInfo* stageWithOutput(const std::string& aov) {
+const StageInfo* stageWithAov(const std::string& aov) {
   for (const auto& s : stages())
-    if (s.output == aov && s.feedsLighting()) return &s;
+    if (!s.aov.name.empty() && s.aov.name == aov) return &s;
   return nullptr;
+}
+
+const char* aovRuleName(AovRule r) {
+  switch (r) {
+  case AovRule::OutputOrNeutral: return "output_or_neutral";
+  case AovRule::TechniqueResource: return "technique_resource";
+  case AovRule::ColorVersionCoverage: return "color_version_coverage";
+  }
+  return "output_or_neutral";
 }
 
 const char* predicateName(StagePredicate p) {
@@ -117,15 +137,15 @@ std::vector<ParamSpec> tonemapParams() {
 }
 
 const std::vector<AovInfo>& builtinAovs() {
-  static const std::vector<AovInfo> list = {
-      {"color", 3, "final image: linear radiance in EXR/PFM, tone-mapped sRGB in PNG"},
-      {"visibility", 1, "fraction of light 0 visible from the surface point (1 without a shadow technique)"},
-      {"ao", 1, "ambient occlusion within ao.radius (1 without an AO technique)"},
-      {"indirect", 3, "one-bounce diffuse irradiance (0 without an indirect technique)"},
-      {"depth", 1, "linear view depth, scene units"},
-      {"normal", 3, "world-space shading normal, unit length"},
-      {"albedo", 3, "base color (linear)"},
-  };
+  static const std::vector<AovInfo> list = [] {
+    std::vector<AovInfo> l{{"color", 3, "final image: linear radiance in EXR/PFM, tone-mapped sRGB in PNG"}};
+    for (const auto& s : stages())
+      if (!s.aov.name.empty()) l.push_back({s.aov.name, s.aov.channels, s.aov.help});
+    l.push_back({"depth", 1, "linear view depth, scene units"});
+    l.push_back({"normal", 3, "world-space shading normal, unit length"});
+    l.push_back({"albedo", 3, "base color (linear)"});
+    return l;
+  }();
   return list;
 }
 

@@ -30,6 +30,32 @@ enum class LightingEffect {
   TransformColor,          // transparency, post: read the current colour version, write the next
 };
 
+// Where a stage AOV's value comes from (docs/stages.md "Stage AOVs").
+enum class AovRule {
+  // The stage's output resource (`StageInfo::output`); the stage's neutral value on every surface
+  // pixel where no technique wrote it. A = surface mask. (visibility, ao, indirect)
+  OutputOrNeutral,
+  // The frame resource named like the AOV, which the stage's active technique writes. Where the
+  // stage does not apply to the scene: the AOV's neutral value on every surface pixel. Where it
+  // applies but no technique of the stage is active, the frame holds no such value: a usage error.
+  // A = surface mask. (arealight)
+  TechniqueResource,
+  // The stage's colour version (`StageInfo::colorVersion`), whoever produced it (a technique, the
+  // fallback, or an alias when the stage does not run). A = 1 where the colour's alpha (coverage:
+  // 1 on opaque surfaces, premultiplied-over accumulated by the layers) is above 0. (transparency)
+  ColorVersionCoverage,
+};
+
+// The AOV a stage defines (docs/contract.md "Images and AOVs"); `name` empty: none.
+struct StageAov {
+  std::string name;
+  int channels = 3;
+  std::string help;
+  AovRule rule = AovRule::OutputOrNeutral;
+  float neutral = 0.0f; // TechniqueResource: the value where the stage does not apply (OutputOrNeutral
+                        // uses StageInfo::neutral, which the lighting pass assumes too)
+};
+
 struct StageInfo {
   std::string id;        // "shadow"
   int order = 0;         // position in the frame, 0-based (= index in stages())
@@ -47,6 +73,7 @@ struct StageInfo {
   // stage is active ("transparent": the built-in back-to-front forward pass); empty: none.
   std::string fallback;
   std::vector<ParamSpec> params;
+  StageAov aov;
 
   // True for stages whose output the lighting pass reads (they run before it); false for colour stages.
   bool feedsLighting() const;
@@ -55,8 +82,10 @@ struct StageInfo {
 
 const std::vector<StageInfo>& stages();
 const StageInfo* findStage(const std::string& id);
-// The stage whose output is `aov` ("visibility" -> shadow), or nullptr (color belongs to no single stage).
-const StageInfo* stageWithOutput(const std::string& aov);
+// The stage that declares the AOV `aov` (StageInfo::aov: "visibility" -> shadow, "arealight" ->
+// arealight, "transparency" -> transparency), or nullptr.
+const StageInfo* stageWithAov(const std::string& aov);
+const char* aovRuleName(AovRule r); // "output_or_neutral", "technique_resource", "color_version_coverage"
 std::vector<ParamSpec> tonemapParams();
 
 // Names used in `list --json` and docs/stages.md.
@@ -69,7 +98,8 @@ const char* lightingEffectName(LightingEffect e); // "multiply_light0_direct", .
 const std::vector<std::string>& colorVersions();
 bool isColorVersion(const std::string& version);
 
-// AOVs every frame can output (docs/contract.md): color, visibility, ao, indirect, depth, normal, albedo.
+// AOVs every frame can output (docs/contract.md): color, then each stage's AOV in stage order
+// (visibility, ao, indirect, arealight, transparency), then depth, normal, albedo.
 struct AovInfo {
   std::string name;
   int channels;

@@ -59,7 +59,55 @@ void Renderer::setTechniques(const std::vector<std::string>& orderedIds) {
   m_notifier.setActive(orderedIds);
 }
 
-void Renderer::checkAov(const std::string& aov) const { checkAovName(aov, m_order, m_registry); }
+bool Renderer::stageHasTechnique(const StageInfo& stage) const {
+  return std::any_of(m_order.begin(), m_order.end(), [&](const std::string& id) { return m_registry.get(id).info.stage == stage.id; });
+}
+
+void Renderer::checkAov(const std::string& aov) const {
+  checkAovName(aov, m_order, m_registry);
+  // A technique-resource AOV (arealight) exists only where its stage's technique computes it: on a
+  // scene the stage applies to, without such a technique, the frame holds no value for it (the
+  // lighting pass's point approximation of rectangles is in the colour instead).
+  const StageInfo* stage = stageWithAov(aov);
+  if (stage && stage->aov.rule == AovRule::TechniqueResource && m_sceneGpu && stage->appliesTo(m_scene) &&
+      !stageHasTechnique(*stage)) {
+    std::string ids;
+    for (const auto& e : m_registry.entries())
+      if (e.info.stage == stage->id) ids += (ids.empty() ? "-t " : " or -t ") + e.info.id;
+    usageError("AOV '" + aov + "' needs an active " + stage->id + " technique on scene '" + m_scene.name + "' (" +
+               (ids.empty() ? "no " + stage->id + " technique is registered in this build" : "add " + ids) + ")");
+  }
+}
+
+AovSource Renderer::aovSource(const std::string& aov, const std::string& finalColor) const {
+  AovSource src;
+  if (aov == "color") {
+    src.resource = finalColor;
+    src.colorImage = true;
+    return src;
+  }
+  const StageInfo* stage = stageWithAov(aov);
+  if (!stage) return src; // depth, normal, albedo: from the G-buffer
+  switch (stage->aov.rule) {
+  case AovRule::OutputOrNeutral:
+    src.resource = stage->output;
+    src.neutral = stage->neutral;
+    break;
+  case AovRule::TechniqueResource:
+    src.neutral = stage->aov.neutral;
+    if (stage->appliesTo(m_scene)) { // checkAov made sure a technique of the stage is active
+      src.resource = aov;
+      src.required = true;
+    }
+    break;
+  case AovRule::ColorVersionCoverage:
+    src.resource = colorVersionResource(stage->colorVersion);
+    src.colorImage = true;
+    src.coverageAlpha = true;
+    break;
+  }
+  return src;
+}
 
 void Renderer::render(const ParamSet& params, int width, int height, const FrameOutputs& outputs, PassTimer& timer) {
   if (!m_sceneGpu) throw Error(ExitCode::Internal, "render() before setScene()");
@@ -78,7 +126,7 @@ void Renderer::render(const ParamSet& params, int width, int height, const Frame
 
   std::vector<std::string> targets;
   for (const auto& aov : outputs.aovs)
-    targets.push_back(isBuiltinAov(aov) ? addAovPass(graph, aov, finalColor) : aovResource(aov));
+    targets.push_back(isBuiltinAov(aov) ? addAovPass(graph, aov, aovSource(aov, finalColor)) : aovResource(aov));
   for (const auto& version : outputs.colors) targets.push_back(colorVersionResource(version));
   if (outputs.displayColor) targets.push_back(res::kColorLdr);
   if (outputs.surfaces)

@@ -26,6 +26,8 @@ namespace rtlab {
 class FrameGraph;
 class ParamSet;
 class TechniqueRegistry;
+struct AovSource;
+struct StageInfo;
 
 // What one frame must produce.
 struct FrameOutputs {
@@ -49,7 +51,8 @@ public:
   void setTechniques(const std::vector<std::string>& orderedIds);
   const std::vector<std::string>& techniques() const { return m_order; }
 
-  // Error(Usage) if an AOV is unknown or belongs to an inactive technique.
+  // Error(Usage) if an AOV is unknown, belongs to an inactive technique, or is a stage AOV that only
+  // a technique computes (arealight) on a scene its stage applies to with no such technique active.
   void checkAov(const std::string& aov) const;
   // Renders one frame at width x height; the scene's lights and camera take their values from
   // `params` first, then techniques hear of scene changes (docs/scene-data.md). Timings go to `timer`.
@@ -91,6 +94,9 @@ private:
   // Adds the G-buffer, the stages in table order with the lighting pass before the first colour
   // stage, and records the colour versions; returns the final colour's resource.
   std::string addStagePasses(FrameGraph& graph);
+  bool stageHasTechnique(const StageInfo& stage) const;
+  // Where built-in AOV `aov` comes from in this frame (the stage table's AOV rules).
+  AovSource aovSource(const std::string& aov, const std::string& finalColor) const;
 
   const TechniqueRegistry& m_registry;
   Scene m_scene;

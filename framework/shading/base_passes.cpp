@@ -182,26 +182,27 @@ void addTonemapPass(FrameGraph& frame, const std::string& color) {
       });
 }
 
-std::string addAovPass(FrameGraph& frame, const std::string& aov, const std::string& color) {
+std::string addAovPass(FrameGraph& frame, const std::string& aov, const AovSource& aovSource) {
   const std::string out = aovResource(aov);
-  std::string source;      // resource the AOV copies, if any
   std::string define;
-  float defaultValue = 0.0f;
-  if (aov == "color") { source = color; define = "AOV_COLOR"; }
-  else if (aov == "depth") define = "AOV_DEPTH";
+  if (aov == "depth") define = "AOV_DEPTH";
   else if (aov == "normal") define = "AOV_NORMAL";
   else if (aov == "albedo") define = "AOV_ALBEDO";
-  else if (const StageInfo* stage = stageWithOutput(aov)) { source = aov; defaultValue = stage->neutral; }
-  else throw Error(ExitCode::Internal, "no built-in AOV '" + aov + "'");
+  else if (aovSource.colorImage) define = "AOV_COLOR";
+  const std::string source = aovSource.resource;
+  const bool required = aovSource.required, coverage = aovSource.coverageAlpha;
+  const float defaultValue = aovSource.neutral;
   frame.addPass(out,
       [&](PassBuilder& b) {
         for (const auto* r : {&res::kPosition, &res::kNormal, &res::kGeometry, &res::kAlbedo}) b.read(*r);
-        if (!source.empty()) b.readIfPresent(source);
+        if (!source.empty() && required) b.read(source);
+        else if (!source.empty()) b.readIfPresent(source);
         b.write(out, frameTexture(frame, GL_RGBA32F));
       },
       [=](PassContext& ctx) {
         std::vector<std::string> defines;
         if (!define.empty()) defines.push_back(define);
+        if (coverage) defines.push_back("AOV_COVERAGE_ALPHA");
         gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "shading/aov.frag"}, defines, "aov"});
         ctx.beginFullscreen(out, {out});
         p.use();

@@ -43,10 +43,19 @@ void addStageFallback(FrameGraph& frame, const std::string& fallback, const std:
 // Transparent surfaces over `input`, written to `output` (the stage's fallback "transparent").
 void addTransparentPass(FrameGraph& frame, const std::string& input, const std::string& output);
 void addTonemapPass(FrameGraph& frame, const std::string& color);
+// Where a built-in AOV's value comes from in this frame: the renderer resolves it from the stage
+// table (StageInfo::aov, docs/stages.md "Stage AOVs").
+struct AovSource {
+  std::string resource;       // copied when it exists; empty: `neutral`
+  bool required = false;      // the resource must have been written (a read, not readIfPresent)
+  float neutral = 0.0f;       // the value on surface pixels where the resource is absent
+  bool colorImage = false;    // an image (color, transparency): the background keeps its colour
+  bool coverageAlpha = false; // A = 1 where the resource's alpha is above 0, not the G-buffer's mask
+};
 // Adds the pass that writes "aov.<name>" (RGBA32F: value, mask) for a built-in AOV and returns the
-// resource name; `color` is the final colour's resource (AOV color). Technique debug views write
-// "aov.<view>" themselves.
-std::string addAovPass(FrameGraph& frame, const std::string& aov, const std::string& color);
+// resource name; depth, normal and albedo come from the G-buffer, the others from `source`.
+// Technique debug views write "aov.<view>" themselves.
+std::string addAovPass(FrameGraph& frame, const std::string& aov, const AovSource& source);
 std::string aovResource(const std::string& aov);
 
 } // namespace rtlab

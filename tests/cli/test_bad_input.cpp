@@ -143,6 +143,11 @@ TEST_F(BadInput, BadSize) { expectFailure({"--size", "0x10"}, 2, "0x10"); }
 TEST_F(BadInput, BadSizeSyntax) { expectFailure({"--size", "wide"}, 2, "wide"); }
 TEST_F(BadInput, UnknownSceneName) { expectFailure({"--scene", "no_such_scene"}, 2, "no_such_scene"); }
 TEST_F(BadInput, UnknownAov) { expectFailure({"--aov", "no_such_aov"}, 2, "no_such_aov"); }
+// A scene with a rectangular light and no arealight technique holds no arealight value (the lighting's
+// point approximation is in the colour): a usage error naming the stage, not a silent 0 (docs/stages.md).
+TEST_F(BadInput, ArealightAovWithoutItsTechnique) {
+  expectFailure({"--scene", "arealight", "--aov", "arealight", "--out", path("out/x.exr")}, 2, "arealight technique");
+}
 TEST_F(BadInput, UnknownOption) { expectFailure({"--no-such-option"}, 2, "--no-such-option"); }
 TEST_F(BadInput, MissingPreset) { expectFailure({"--preset", path("none.json")}, 3, "none.json"); }
 TEST_F(BadInput, UnreadablePreset) {

@@ -9,6 +9,7 @@
 #include "render_fixture.h"
 
 #include "../support/fake_technique.h"
+#include "../support/test_util.h"
 #include "frame/frame_graph.h"
 #include "frame/param_catalog.h"
 #include "frame/registry.h"
@@ -71,12 +72,44 @@ TechniqueEntry fakeColor(const std::string& id, const std::string& stage, FakeCo
   return e;
 }
 
+// A fake arealight technique: writes the frame resource `arealight` (the stage's AOV, docs/stages.md
+// "Stage AOVs") as a constant radiance and adds it to the colour it is handed.
+constexpr glm::vec4 kFakeAreaRadiance(0.25f, 0.5f, 0.75f, 1.0f);
+
+class FakeAreaAovTechnique : public Technique {
+public:
+  explicit FakeAreaAovTechnique(TechniqueInfo info) : m_info(std::move(info)) {}
+  const TechniqueInfo& info() const override { return m_info; }
+  void setup(FrameGraph& frame) override {
+    const std::string in = frame.colorInput(), out = frame.colorOutput();
+    frame.addPass(m_info.id + ".radiance", [&](PassBuilder& b) { b.write("arealight", frameTexture(frame, GL_RGBA16F)); },
+        [](PassContext& ctx) { glClearTexImage(ctx.texture("arealight").id(), 0, GL_RGBA, GL_FLOAT, &kFakeAreaRadiance.x); });
+    frame.addPass(m_info.id + ".color",
+        [&](PassBuilder& b) {
+          b.read(in);
+          b.read("arealight");
+          b.write(out, frameTexture(frame, GL_RGBA16F));
+        },
+        [in, out](PassContext& ctx) {
+          const gl::Texture& src = ctx.texture(in);
+          glCopyImageSubData(src.id(), GL_TEXTURE_2D, 0, 0, 0, 0, ctx.texture(out).id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                             src.desc().width, src.desc().height, 1);
+        });
+  }
+
+private:
+  TechniqueInfo m_info;
+};
+
 // The built-in techniques plus the fakes.
 const TechniqueRegistry& testRegistry() {
   static const TechniqueRegistry registry = [] {
     TechniqueRegistry r;
     registerAllTechniques(r);
     r.add(fakeColor("fake_area", "arealight", FakeColor::Copy));
+    TechniqueEntry areaAov = test::fakeTechnique("fake_area_aov", "arealight");
+    areaAov.create = [info = areaAov.info] { return std::make_unique<FakeAreaAovTechnique>(info); };
+    r.add(areaAov);
     r.add(fakeColor("fake_copy", "post", FakeColor::Copy));
     r.add(fakeColor("fake_fill", "post", FakeColor::Fill, glm::vec4(1, 2, 3, 1)));
     r.add(fakeColor("fake_none", "post", FakeColor::Nothing));
@@ -211,6 +244,111 @@ TEST(ArealightStage, NoRectLightNoStage) {
   r.render({"fake_area"}, {"color"});
   EXPECT_FALSE(r.ran("fake_area.color")); // predicate: the scene has no rectangular light
   EXPECT_EQ(differingPixels(off, r.renderer.readAov("color")), 0);
+}
+
+// ---- stage AOVs (docs/stages.md "Stage AOVs") ---------------------------------------------------
+
+// The G-buffer's surface mask of the last frame (any data AOV carries it; depth is the cheapest).
+std::vector<float> surfaceMask(StageRenderer& r, const std::string& aov) {
+  r.render(r.renderer.techniques(), {aov, "depth"});
+  return r.renderer.readAov("depth").mask;
+}
+
+int count(const std::vector<float>& mask, float value) { return int(std::count(mask.begin(), mask.end(), value)); }
+
+TEST(StageAovs, ArealightIsZeroWithoutRectLight) {
+  StageRenderer r(loadScene("cornell"));
+  for (const std::vector<std::string>& techniques : {std::vector<std::string>{}, std::vector<std::string>{"fake_area_aov"}}) {
+    r.renderer.setTechniques(techniques);
+    const std::vector<float> mask = surfaceMask(r, "arealight");
+    const Image area = r.renderer.readAov("arealight");
+    EXPECT_FALSE(r.ran("fake_area_aov.radiance")); // the stage does not apply to cornell
+    ASSERT_EQ(area.channels, 3);
+    for (float v : area.pixels) ASSERT_EQ(v, 0.0f);
+    EXPECT_EQ(area.mask, mask);
+    EXPECT_GT(count(mask, 1.0f), kW * kH / 2);
+  }
+}
+
+TEST(StageAovs, ArealightOnARectLightSceneNeedsATechnique) {
+  // The lighting pass's point approximation of the rectangle is in the colour: the frame holds no
+  // arealight value, so asking for it is a usage error naming the registered arealight techniques.
+  StageRenderer r(loadScene("arealight"));
+  r.renderer.setTechniques({});
+  EXPECT_RTLAB_ERROR(r.renderer.checkAov("arealight"), ExitCode::Usage, "'arealight'", "arealight technique",
+                     "-t fake_area_aov");
+  FrameOutputs outputs;
+  outputs.aovs = {"arealight"};
+  PassTimer timer(TimingMethod::CpuFinish);
+  EXPECT_RTLAB_ERROR(r.renderer.render(r.params, kW, kH, outputs, timer), ExitCode::Usage, "'arealight'");
+}
+
+TEST(StageAovs, ArealightIsTheTechniquesResource) {
+  StageRenderer r(loadScene("arealight"));
+  r.renderer.setTechniques({"fake_area_aov"});
+  EXPECT_NO_THROW(r.renderer.checkAov("arealight"));
+  const std::vector<float> mask = surfaceMask(r, "arealight");
+  ASSERT_TRUE(r.ran("fake_area_aov.radiance"));
+  const Image area = r.renderer.readAov("arealight");
+  EXPECT_EQ(area.mask, mask);
+  for (std::size_t i = 0; i < area.pixelCount(); ++i)
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(area.pixels[i * 3 + c], mask[i] * kFakeAreaRadiance[c]) << i;
+  // A technique of the stage that does not write the resource is the technique's bug: the graph
+  // refuses the read instead of writing a neutral value.
+  r.renderer.setTechniques({"fake_area"});
+  EXPECT_NO_THROW(r.renderer.checkAov("arealight"));
+  FrameOutputs outputs;
+  outputs.aovs = {"arealight"};
+  PassTimer timer(TimingMethod::CpuFinish);
+  EXPECT_THROW(r.renderer.render(r.params, kW, kH, outputs, timer), Error);
+}
+
+TEST(StageAovs, TransparencyIsPrePostWithLayerCoverage) {
+  // panes as shipped (no pane lies over the background there) and panes without its opaque
+  // instances (every pane lies over the background).
+  const Scene panes = loadScene("panes");
+  Scene layersOnly = panes;
+  layersOnly.name = "panes_layers_only";
+  std::erase_if(layersOnly.instances, [](const Instance& i) { return !i.transparent; });
+  ASSERT_TRUE(layersOnly.hasTransparency());
+  int layerOverBackground = 0, empty = 0, surfaces = 0;
+  StageRenderer r(panes);
+  for (const Scene* scene : std::initializer_list<const Scene*>{&panes, &layersOnly}) {
+    r.setScene(*scene);
+    r.render({}, {"transparency", "depth"}, {"lit", "pre_post"});
+    ASSERT_TRUE(r.ran("transparent"));
+    const Image trans = r.renderer.readAov("transparency"), prePost = r.renderer.readColor("pre_post");
+    const Image lit = r.renderer.readColor("lit");
+    const std::vector<float> surface = r.renderer.readAov("depth").mask;
+    EXPECT_EQ(differingPixels(trans, prePost), 0) << scene->name;
+    EXPECT_GT(differingPixels(trans, lit, 1e-3f), kW * kH / 20) << "the panes are in it";
+    for (std::size_t i = 0; i < trans.pixelCount(); ++i) {
+      if (surface[i] == 1.0f) {
+        ASSERT_EQ(trans.mask[i], 1.0f) << i; // an opaque surface covers it
+        ++surfaces;
+        continue;
+      }
+      // Background: covered exactly where a layer changed the colour (lit there is the background).
+      bool layer = false;
+      for (int c = 0; c < 3; ++c) layer |= trans.pixels[i * 3 + c] != lit.pixels[i * 3 + c];
+      ASSERT_EQ(trans.mask[i], layer ? 1.0f : 0.0f) << scene->name << " pixel " << i;
+      (layer ? layerOverBackground : empty) += 1;
+    }
+  }
+  RecordProperty("layer_over_background_pixels", layerOverBackground); // docs/stages.md quotes them
+  RecordProperty("empty_background_pixels", empty);
+  RecordProperty("surface_pixels", surfaces);
+  EXPECT_GT(layerOverBackground, 0);
+  EXPECT_GT(empty, 0);
+  EXPECT_GT(surfaces, 0);
+}
+
+TEST(StageAovs, TransparencyWithoutTransparentMaterialIsColor) {
+  StageRenderer r(loadScene("contact"));
+  r.render({}, {"transparency", "color"});
+  const Image trans = r.renderer.readAov("transparency"), color = r.renderer.readAov("color");
+  EXPECT_EQ(differingPixels(trans, color), 0);
+  EXPECT_EQ(trans.mask, color.mask);
 }
 
 // ---- colour versions ---------------------------------------------------------------------------

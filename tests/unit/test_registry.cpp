@@ -143,6 +143,23 @@ TEST(Registry, BadRegistrationsAreInternal) {
   EXPECT_EQ(r.find("x_b"), nullptr);
 }
 
+TEST(Registry, DebugViewMayBeNamedExactlyItsTechnique) {
+  // The technique's own output (bloom's AOV `bloom`) is a debug view named exactly the id; every
+  // other view stays under `<id>.`, and no view shadows a built-in AOV.
+  TechniqueRegistry r = fakeRegistry();
+  r.add(fake("glow", "post", {}, {{"glow", 3, "the glow added to the colour"}, {"glow.bright", 3, "bright part"}}));
+  EXPECT_NO_THROW(checkAovName("glow", {"glow"}, r));
+  EXPECT_EQ(aovChannels("glow", r), 3);
+  EXPECT_RTLAB_ERROR(checkAovName("glow", {}, r), ExitCode::Usage, "'glow'", "not active");
+  const auto names = knownAovNames(r);
+  EXPECT_NE(std::find(names.begin(), names.end(), "glow"), names.end());
+  EXPECT_RTLAB_ERROR(r.add(fake("glo", "post", {}, {{"glow", 3, ""}})), ExitCode::Internal, "'glo'", "'glow'");
+  EXPECT_RTLAB_ERROR(r.add(fake("glowing", "post", {}, {{"glow", 3, ""}})), ExitCode::Internal, "'glowing'", "'glow'");
+  EXPECT_RTLAB_ERROR(r.add(fake("depth", "post", {}, {{"depth", 1, ""}})), ExitCode::Internal, "'depth'", "built-in");
+  EXPECT_RTLAB_ERROR(r.add(fake("x_g", "post", {}, {{"x_g_", 1, ""}})), ExitCode::Internal, "'x_g_'");
+  EXPECT_EQ(r.entries().size(), 7u); // nothing half-added
+}
+
 TEST(Registry, ReservedOrMalformedIdsAreInternal) {
   TechniqueRegistry r;
   // "none" is the -t keyword; stage ids, tonemap, camera and light<N> are key prefixes the frame
@@ -305,8 +322,31 @@ TEST(StageParams, TonemapAndBuiltinAovs) {
   EXPECT_EQ(set.spec("tonemap.operator").type, ParamType::Enum);
   std::vector<std::pair<std::string, int>> aovs;
   for (const auto& a : builtinAovs()) aovs.emplace_back(a.name, a.channels);
-  EXPECT_EQ(aovs, (std::vector<std::pair<std::string, int>>{
-                      {"color", 3}, {"visibility", 1}, {"ao", 1}, {"indirect", 3}, {"depth", 1}, {"normal", 3}, {"albedo", 3}}));
+  EXPECT_EQ(aovs, (std::vector<std::pair<std::string, int>>{{"color", 3}, {"visibility", 1}, {"ao", 1}, {"indirect", 3},
+                                                             {"arealight", 3}, {"transparency", 3}, {"depth", 1},
+                                                             {"normal", 3}, {"albedo", 3}}));
+}
+
+TEST(StageParams, StageAovsComeFromTheStageTable) {
+  // Each stage AOV is declared by its stage (docs/stages.md "Stage AOVs"); post defines none (the
+  // AOV bloom is the bloom technique's own debug view).
+  EXPECT_EQ(stageWithAov("visibility"), findStage("shadow"));
+  EXPECT_EQ(stageWithAov("ao"), findStage("ao"));
+  EXPECT_EQ(stageWithAov("indirect"), findStage("indirect"));
+  EXPECT_EQ(stageWithAov("arealight"), findStage("arealight"));
+  EXPECT_EQ(stageWithAov("transparency"), findStage("transparency"));
+  EXPECT_EQ(stageWithAov("color"), nullptr);
+  EXPECT_EQ(stageWithAov("bloom"), nullptr);
+  EXPECT_TRUE(findStage("post")->aov.name.empty());
+  EXPECT_EQ(findStage("arealight")->aov.rule, AovRule::TechniqueResource);
+  EXPECT_EQ(findStage("arealight")->aov.neutral, 0.0f);
+  EXPECT_EQ(findStage("transparency")->aov.rule, AovRule::ColorVersionCoverage);
+  EXPECT_EQ(findStage("shadow")->aov.rule, AovRule::OutputOrNeutral);
+  for (const auto& s : stages())
+    if (!s.aov.name.empty()) {
+      EXPECT_TRUE(isBuiltinAov(s.aov.name)) << s.id;
+      EXPECT_FALSE(s.aov.help.empty()) << s.id;
+    }
 }
 
 // ---- param catalog -----------------------------------------------------------------------------
@@ -340,7 +380,7 @@ TEST(Catalog, CollidingTechniqueKeysAreInternal) {
 
 TEST(Aov, BuiltinsAccepted) {
   const TechniqueRegistry r = fakeRegistry();
-  for (const char* a : {"color", "visibility", "ao", "indirect", "depth", "normal", "albedo"}) {
+  for (const char* a : {"color", "visibility", "ao", "indirect", "arealight", "transparency", "depth", "normal", "albedo"}) {
     EXPECT_NO_THROW(checkAovName(a, {}, r)) << a;
     EXPECT_TRUE(isBuiltinAov(a)) << a;
   }
