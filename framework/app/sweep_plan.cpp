@@ -238,7 +238,9 @@ SweepPlan planSweep(const Args& frameArgs, const SweepRequest& request) {
   if (request.spp < reference->minSpp || request.spp > reference->maxSpp)
     usageError("--spp " + std::to_string(request.spp) + " is out of range " + std::to_string(reference->minSpp) + ".." +
                std::to_string(reference->maxSpp) + " for the " + reference->aov + " reference");
-  plan.aov = findStage(plan.stage)->output; // what the points output and compare with the reference
+  // What the points output and compare with the reference: the reference's own AOV (the stage's
+  // output for shadow, ao and indirect; e.g. `bloom`, `arealight`, `transparency` for the others).
+  plan.aov = reference->aov;
 
   // The base frame: scene, preset, --set and frame options, validated as render would.
   ResolvedFrame base = resolveFrame(frameArgs);
