@@ -18,6 +18,19 @@ class OwnRegistryTest : public ::testing::Test {
 protected:
   void SetUp() override { testContext().makeCurrent(); }
 
+  // Registers technique T, constructed from its TechniqueInfo, as `id` in `stage`.
+  template <class T>
+  void addTechnique(const std::string& id, const std::string& stage) {
+    TechniqueInfo info;
+    info.id = id;
+    info.stage = stage;
+    info.title = id;
+    TechniqueEntry e;
+    e.info = info;
+    e.create = [info] { return std::make_unique<T>(info); };
+    m_registry.add(e);
+  }
+
   // Loads a scene, its default keys (scene keys and those of m_registry's techniques, so register
   // them first) and sets it on a new renderer.
   void load(const std::string& name) {

@@ -40,14 +40,7 @@ class ComputeTechnique : public OwnRegistryTest {
 protected:
   void SetUp() override {
     OwnRegistryTest::SetUp();
-    TechniqueInfo info;
-    info.id = "cao";
-    info.stage = std::string("ao");
-    info.title = "compute ao";
-    TechniqueEntry e;
-    e.info = info;
-    e.create = [info] { return std::make_unique<ComputeAo>(info); };
-    m_registry.add(e);
+    addTechnique<ComputeAo>("cao", "ao");
   }
 };
 

@@ -42,28 +42,26 @@ bool allEqual(const std::vector<float>& texels, const glm::vec4& value) {
 
 // ---- a compute pass writes a 3D texture, a fragment pass samples it ----
 
-TEST(FrameGraph, ComputeWritesVolumeThatFragmentPassSamples) {
-  testContext().makeCurrent();
-  drainGlErrors();
-  constexpr int n = 16;
-  GraphHarness h(n * n, n);
-  FrameGraph graph = h.graph();
-  gl::TextureDesc volume = rgba16f(GL_TEXTURE_3D, n, n);
-  volume.depth = n;
+// The compute pass that stores f(voxel) = vec4(voxel, 16) / 16 into every voxel of `volume`.
+void addVolumeFill(FrameGraph& graph, GraphHarness& h, const std::string& name, const gl::TextureDesc& volume,
+                   int* runs = nullptr) {
   graph.addComputePass(
-      "volume.fill", ComputeGrid::of("volume"), [&](PassBuilder& b) { b.writeImage("volume", volume, 0); },
-      [&](PassContext& ctx) -> gl::Program& {
-        gl::Program& p = h.program({testShader("volume_fill.comp")});
-        p.set("uSize", ctx.grid);
-        return p;
+      name, ComputeGrid::of("volume"), [&](PassBuilder& b) { b.writeImage("volume", volume, 0); },
+      [&h, runs](PassContext& ctx) -> gl::Program& {
+        if (runs) ++*runs;
+        return h.program({testShader("volume_fill.comp")}).set("uSize", ctx.grid);
       });
+}
+
+// The fragment pass that samples the n^3 volume and unfolds it into the n^2 x n texture "unfolded".
+void addVolumeUnfold(FrameGraph& graph, GraphHarness& h, int n) {
   graph.addPass(
       "volume.sample",
       [&](PassBuilder& b) {
         b.read("volume");
         b.write("unfolded", rgba16f(GL_TEXTURE_2D, n * n, n));
       },
-      [&](PassContext& ctx) {
+      [&h, n](PassContext& ctx) {
         ctx.beginFullscreen("volume.sample", {"unfolded"});
         gl::Program& p = h.program({"common/fullscreen.vert", testShader("volume_sample.frag")});
         p.use();
@@ -71,10 +69,10 @@ TEST(FrameGraph, ComputeWritesVolumeThatFragmentPassSamples) {
         p.set("uVolume", 0).set("uSize", n);
         ctx.common.drawFullscreen();
       });
-  h.runFrame(graph, {"unfolded"});
-  EXPECT_EQ(graph.barrierBefore("volume.sample"), GLbitfield(GL_TEXTURE_FETCH_BARRIER_BIT));
-  EXPECT_EQ(graph.barrierBefore("volume.fill"), 0u);
+}
 
+// Texels of "unfolded" that differ from f(voxel).
+int wrongUnfoldedTexels(GraphHarness& h, int n) {
   const std::vector<float> pixels = readLayer(*h.pool.find("unfolded"), 0, 0);
   int wrong = 0;
   for (int y = 0; y < n; ++y)
@@ -83,7 +81,23 @@ TEST(FrameGraph, ComputeWritesVolumeThatFragmentPassSamples) {
       const float* p = &pixels[(std::size_t(y) * n * n + x) * 4];
       if (glm::vec4(p[0], p[1], p[2], p[3]) != expected) ++wrong;
     }
-  EXPECT_EQ(wrong, 0) << "texels that differ from f(voxel)";
+  return wrong;
+}
+
+TEST(FrameGraph, ComputeWritesVolumeThatFragmentPassSamples) {
+  testContext().makeCurrent();
+  drainGlErrors();
+  constexpr int n = 16;
+  GraphHarness h(n * n, n);
+  FrameGraph graph = h.graph();
+  gl::TextureDesc volume = rgba16f(GL_TEXTURE_3D, n, n);
+  volume.depth = n;
+  addVolumeFill(graph, h, "volume.fill", volume);
+  addVolumeUnfold(graph, h, n);
+  h.runFrame(graph, {"unfolded"});
+  EXPECT_EQ(graph.barrierBefore("volume.sample"), GLbitfield(GL_TEXTURE_FETCH_BARRIER_BIT));
+  EXPECT_EQ(graph.barrierBefore("volume.fill"), 0u);
+  EXPECT_EQ(wrongUnfoldedTexels(h, n), 0) << "texels that differ from f(voxel)";
   EXPECT_EQ(h.pool.find("volume")->desc().bytes(), std::size_t(n) * n * n * 8);
   EXPECT_EQ(drainGlErrors(), 0);
 }
@@ -99,48 +113,16 @@ TEST(FrameGraph, ImportedVolumeIsBakedOnceAndSampledInLaterFrames) {
   volumeDesc.depth = n;
   gl::Texture volume(volumeDesc, "test.volume"); // owned by the "technique", not the pool
   int bakes = 0;
-  auto frame = [&](bool bake) {
+  for (int frame = 0; frame < 3; ++frame) {
     FrameGraph graph = h.graph();
     graph.importTexture("volume", volume);
-    if (bake)
-      graph.addComputePass(
-          "volume.bake", ComputeGrid::of("volume"), [&](PassBuilder& b) { b.writeImage("volume", volumeDesc, 0); },
-          [&](PassContext& ctx) -> gl::Program& {
-            ++bakes;
-            return h.program({testShader("volume_fill.comp")}).set("uSize", ctx.grid);
-          });
-    graph.addPass(
-        "volume.sample",
-        [&](PassBuilder& b) {
-          b.read("volume");
-          b.write("unfolded", rgba16f(GL_TEXTURE_2D, n * n, n));
-        },
-        [&](PassContext& ctx) {
-          ctx.beginFullscreen("volume.sample", {"unfolded"});
-          gl::Program& p = h.program({"common/fullscreen.vert", testShader("volume_sample.frag")});
-          p.use();
-          ctx.texture("volume").bind(0);
-          p.set("uVolume", 0).set("uSize", n);
-          ctx.common.drawFullscreen();
-        });
+    if (frame == 0) addVolumeFill(graph, h, "volume.bake", volumeDesc, &bakes);
+    addVolumeUnfold(graph, h, n);
     h.runFrame(graph, {"unfolded"});
     // The first use in a frame gets its path's barrier: the object may hold an earlier frame's stores.
-    EXPECT_EQ(graph.barrierBefore("volume.sample"), GLbitfield(GL_TEXTURE_FETCH_BARRIER_BIT));
-    return readLayer(*h.pool.find("unfolded"), 0, 0);
-  };
-  auto wrongTexels = [&](const std::vector<float>& pixels) {
-    int wrong = 0;
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n * n; ++x) {
-        const glm::vec4 expected = glm::vec4(float(x % n), float(y), float(x / n), 16.0f) / 16.0f;
-        const float* p = &pixels[(std::size_t(y) * n * n + x) * 4];
-        if (glm::vec4(p[0], p[1], p[2], p[3]) != expected) ++wrong;
-      }
-    return wrong;
-  };
-  EXPECT_EQ(wrongTexels(frame(true)), 0);
-  EXPECT_EQ(wrongTexels(frame(false)), 0) << "the second frame samples what the first baked";
-  EXPECT_EQ(wrongTexels(frame(false)), 0);
+    EXPECT_EQ(graph.barrierBefore("volume.sample"), GLbitfield(GL_TEXTURE_FETCH_BARRIER_BIT)) << "frame " << frame;
+    EXPECT_EQ(wrongUnfoldedTexels(h, n), 0) << "frame " << frame << " samples what the first baked";
+  }
   EXPECT_EQ(bakes, 1);
   for (const auto& e : h.pool.entries()) EXPECT_NE(e.name, "volume") << "an imported object is not pool memory";
   EXPECT_EQ(drainGlErrors(), 0);

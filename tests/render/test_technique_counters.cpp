@@ -28,16 +28,8 @@ class TechniqueCounters : public OwnRegistryTest {
 protected:
   void SetUp() override {
     OwnRegistryTest::SetUp();
-    for (const char* stage : {"post", "shadow"}) {
-      TechniqueInfo info;
-      info.id = std::string("count_") + stage;
-      info.stage = stage;
-      info.title = info.id;
-      TechniqueEntry e;
-      e.info = info;
-      e.create = [info] { return std::make_unique<SetupCounter>(info); };
-      m_registry.add(e);
-    }
+    addTechnique<SetupCounter>("count_post", "post");
+    addTechnique<SetupCounter>("count_shadow", "shadow");
   }
 };
 
