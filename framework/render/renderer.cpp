@@ -121,6 +121,7 @@ void Renderer::render(const ParamSet& params, int width, int height, const Frame
   FrameGraph graph(m_scene, params, view, *m_sceneGpu, m_programs, m_pool, m_common);
 
   m_common.hdrClamp.beginFrame(outputs.countHdrClamped);
+  if (outputs.countHdrClamped) graph.importBuffer(HdrClampCounters::kResource, m_common.hdrClamp.buffer());
   const std::string finalColor = addStagePasses(graph);
   addTonemapPass(graph, finalColor);
 

@@ -91,6 +91,7 @@ void addLightingPass(FrameGraph& frame, const std::string& output, bool rectLigh
         for (const auto& stage : stages())
           if (stage.feedsLighting()) b.readIfPresent(stage.output);
         b.write(output, frameTexture(frame, GL_RGBA16F));
+        HdrClampCounters::declareUse(frame, b);
       },
       [output, rectLightsAsPoints](PassContext& ctx) {
         std::vector<std::string> defines;
@@ -135,6 +136,7 @@ void addTransparentPass(FrameGraph& frame, const std::string& input, const std::
         b.read(input);
         b.read(res::kDepth);
         b.write(output, frameTexture(frame, GL_RGBA16F));
+        HdrClampCounters::declareUse(frame, b);
       },
       [input, output](PassContext& ctx) {
         // Blending composites over the opaque colour, so the output starts as a copy of the input

@@ -1,5 +1,6 @@
 #include "shading/hdr_clamp.h"
 
+#include "frame/frame_graph.h"
 #include "util/error.h"
 
 #include <algorithm>
@@ -9,11 +10,8 @@ namespace rtlab {
 void HdrClampCounters::beginFrame(bool count) {
   m_counting = count;
   if (!count) return;
-  if (!m_buffer) {
-    m_buffer = gl::Buffer("hdr_clamp.counters");
-    glNamedBufferStorage(m_buffer.id(), GLsizeiptr(kMaxPasses * sizeof(GLuint)), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  }
-  glClearNamedBufferData(m_buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+  if (!m_buffer) m_buffer = gl::BufferObject({gl::BufferKind::Storage, kMaxPasses * sizeof(GLuint)}, kResource);
+  m_buffer.clear();
   m_used.assign(m_passes.size(), false);
 }
 
@@ -31,16 +29,20 @@ void HdrClampCounters::bind(gl::Program& program, const std::string& pass, const
   if (!m_counting) return;
   const int index = slot(pass);
   m_used[std::size_t(index)] = true;
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBinding, m_buffer.id());
   program.set(uniform, index);
+}
+
+void HdrClampCounters::declareUse(const FrameGraph& frame, PassBuilder& b) {
+  if (frame.isImported(kResource)) b.readWriteBuffer(kResource, BufferBinding::Storage, kBinding);
 }
 
 std::vector<HdrClampCounters::Count> HdrClampCounters::read() const {
   std::vector<Count> out;
   if (!m_buffer) return out;
+  // Not a target of the frame (that would keep the passes that count, e.g. lighting for a
+  // visibility-only frame), so the read-back after the frame issues its own barrier.
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<GLuint> values(kMaxPasses, 0);
-  glGetNamedBufferSubData(m_buffer.id(), 0, GLsizeiptr(values.size() * sizeof(GLuint)), values.data());
+  const std::vector<GLuint> values = m_buffer.downloadAs<GLuint>();
   for (std::size_t i = 0; i < m_passes.size(); ++i)
     if (m_used[i]) out.push_back(Count{m_passes[i], values[i]});
   return out;
