@@ -17,10 +17,13 @@ void SceneNotifier::setActive(const std::vector<std::string>& ids) {
 
 void SceneNotifier::deliver(const std::vector<Light>& lights, const std::vector<std::string>& order,
                             const std::map<std::string, std::unique_ptr<Technique>>& techniques) {
-  if (m_haveLastLights && !sameLights(lights, m_lastLights))
-    for (auto& [id, change] : m_pending) change.lights = true;
-  m_lastLights = lights;
-  m_haveLastLights = true;
+  // Copied only when they changed: an unchanged frame allocates nothing.
+  if (!m_haveLastLights || !sameLights(lights, m_lastLights)) {
+    if (m_haveLastLights)
+      for (auto& [id, change] : m_pending) change.lights = true;
+    m_lastLights = lights;
+    m_haveLastLights = true;
+  }
   for (const auto& id : order) {
     auto pending = m_pending.find(id);
     auto technique = techniques.find(id);
