@@ -1,6 +1,7 @@
 // rtlab render: one frame (or --frames N measured frames) headless, one AOV to an image, stats.
 #include "app/aov_preview.h"
 #include "app/commands.h"
+#include "app/exercise_option.h"
 #include "app/frame_options.h"
 #include "app/measure.h"
 #include "app/run_info.h"
@@ -23,6 +24,7 @@ std::vector<OptionSpec> renderOptions() {
   specs.push_back({"--out", "", true, "FILE", "output image .png/.exr/.pfm (default <scene>_<aov>.png)"});
   specs.push_back({"--stats", "", true, "FILE.json", "write timings, resources and resolved parameters"});
   specs.push_back({"--range", "", true, "LO:HI", "PNG preview of a data/debug AOV: map LO..HI to black..white ('auto': the data's range)"});
+  specs.push_back(exerciseOptionSpec());
   specs.push_back({"--false-color", "", false, "", "PNG preview of a one-channel AOV through the magma colour map"});
   return specs;
 }
@@ -40,6 +42,7 @@ int runRender(int argc, char** argv) {
     return 0;
   }
   ResolvedFrame frame = resolveFrame(args);
+  applyExerciseOption(args, frame);
   const std::string aov = args.get("--aov", "color");
   const TechniqueRegistry& registry = TechniqueRegistry::instance();
   checkAovName(aov, frame.techniques, registry);

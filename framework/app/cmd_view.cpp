@@ -2,6 +2,7 @@
 // before the window opens — the frame options, the --script actions and the --bookmarks file —
 // so a bad input exits 2/3 with one line and never half-runs; the window itself needs a display
 // (exit 4 otherwise, suggesting xvfb-run or rtlab render).
+#include "app/exercise_option.h"
 #include "app/commands.h"
 #include "app/frame_options.h"
 #include "frame/registry.h"
@@ -28,6 +29,7 @@ int runView(int argc, char** argv) {
   auto specs = frameOptionSpecs();
   specs.push_back(
       {"--screenshot", "", true, "FILE", "after --frames N frames, save the window (UI included) as PNG and exit"});
+  specs.push_back(exerciseOptionSpec());
   specs.push_back({"--script", "", true, "FILE", "run a JSON list of actions (docs/viewer-scripts.md)"});
   specs.push_back(
       {"--bookmarks", "", true, "FILE", "lecture bookmarks, stepped with the arrow keys (docs/viewer-scripts.md)"});
@@ -44,6 +46,7 @@ int runView(int argc, char** argv) {
   }
   ViewerOptions options;
   options.frame = resolveFrame(args);
+  applyExerciseOption(args, options.frame);
   const TechniqueRegistry& registry = TechniqueRegistry::instance();
   options.screenshot = args.get("--screenshot");
   if (!options.screenshot.empty()) {

@@ -10,5 +10,6 @@ int runShowcase(int argc, char** argv);
 int runReference(int argc, char** argv);
 int runCompare(int argc, char** argv);
 int runSweep(int argc, char** argv);
+int runExercise(int argc, char** argv);
 
 } // namespace rtlab

@@ -33,6 +33,7 @@ const char* kUsage =
     "  showcase   render every scene and technique, with stats, into a folder with index.html\n"
     "  compare    error metrics of image B against image A (RMSE, PSNR, SSIM, FLIP)\n"
     "  sweep      error against time over parameter grids, to results.csv and report.html\n"
+    "  exercise   course exercises: list, new (a student's folder), grade (against the solution)\n"
     "  --version  version and git commit\n\n"
     "'rtlab <command> --help' describes a command's options.\n";
 
@@ -63,7 +64,8 @@ int main(int argc, char** argv) {
     if (command == "showcase") return runShowcase(argc, argv);
     if (command == "compare") return runCompare(argc, argv);
     if (command == "sweep") return runSweep(argc, argv);
-    usageError("unknown command '" + command + "' (commands: list, render, reference, view, showcase, compare, sweep; see 'rtlab --help')");
+    if (command == "exercise") return runExercise(argc, argv);
+    usageError("unknown command '" + command + "' (commands: list, render, reference, view, showcase, compare, sweep, exercise; see 'rtlab --help')");
   } catch (const Error& e) {
     std::fprintf(stderr, "rtlab: error: %s\n", e.what());
     return int(e.code());

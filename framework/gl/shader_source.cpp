@@ -1,5 +1,6 @@
 #include "gl/shader_source.h"
 
+#include "gl/shader_overlay.h"
 #include "util/error.h"
 #include "util/paths.h"
 
@@ -14,13 +15,49 @@ namespace {
 
 [[noreturn]] void shaderError(const std::string& msg) { throw Error(ExitCode::Shader, msg); }
 
-std::string resolvePath(const std::string& name, const std::string& includer) {
-  if (fs::path(name).is_absolute()) return name;
-  if (!includer.empty()) {
-    fs::path local = fs::path(includer).parent_path() / name;
-    if (fs::exists(local)) return local.lexically_normal().string();
+// A shader file: its path relative to shaders/ when it is one of rtlab's (empty for a file given by
+// an absolute path outside), and where its text comes from (the shaders/ tree or the overlay).
+struct Located {
+  std::string logical;
+  std::string physical;               // read from here, named in errors, watched for reload
+  const ShaderReplacement* replacement = nullptr;
+};
+
+Located locateLogical(const std::string& logical) {
+  const auto& overlay = shaderOverlay();
+  if (auto it = overlay.find(logical); it != overlay.end()) return {logical, it->second.path, &it->second};
+  return {logical, fs::path(shaderPath(logical)).lexically_normal().string(), nullptr};
+}
+
+bool existsLogical(const std::string& logical) {
+  return shaderOverlay().count(logical) != 0 || fs::exists(shaderPath(logical));
+}
+
+// `name` as written in #include (or the root path), resolved relative to the including file and
+// then to shaders/.
+Located resolvePath(const std::string& name, const Located* includer) {
+  if (fs::path(name).is_absolute()) return {"", name, nullptr};
+  if (includer && !includer->logical.empty()) {
+    const std::string local = (fs::path(includer->logical).parent_path() / name).lexically_normal().generic_string();
+    if (existsLogical(local)) return locateLogical(local);
+  } else if (includer) {
+    fs::path local = fs::path(includer->physical).parent_path() / name;
+    if (fs::exists(local)) return {"", local.lexically_normal().string(), nullptr};
   }
-  return fs::path(shaderPath(name)).lexically_normal().string();
+  return locateLogical(fs::path(name).lexically_normal().generic_string());
+}
+
+bool readText(const Located& file, std::string& text) {
+  if (file.replacement && file.replacement->inMemory) {
+    text = file.replacement->text;
+    return true;
+  }
+  std::ifstream in(file.physical, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  text = ss.str();
+  return true;
 }
 
 struct Preprocessor {
@@ -35,15 +72,17 @@ struct Preprocessor {
     return int(files.size()) - 1;
   }
 
-  void include(const std::string& path, const std::string& fromFile, int fromLine, bool isRoot,
+  void include(const Located& file, const std::string& fromFile, int fromLine, bool isRoot,
                const std::vector<std::string>& defines) {
+    const std::string& path = file.physical;
     for (const auto& s : stack)
       if (s == path) shaderError(fromFile + ":" + std::to_string(fromLine) + ": #include cycle through '" + path + "'");
-    std::ifstream in(path);
-    if (!in) {
+    std::string text;
+    if (!readText(file, text)) {
       if (isRoot) shaderError("cannot read shader '" + path + "'");
       shaderError(fromFile + ":" + std::to_string(fromLine) + ": cannot open included file '" + path + "'");
     }
+    std::istringstream in(text);
     stack.push_back(path);
     const int index = fileIndex(path);
     static const std::regex includeRe(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
@@ -61,7 +100,7 @@ struct Preprocessor {
         out << "#line " << lineNo + 1 << " " << index << "\n";
         sawVersion = true;
       } else if (std::regex_match(line, m, includeRe)) {
-        include(resolvePath(m[1].str(), path), path, lineNo, false, defines);
+        include(resolvePath(m[1].str(), &file), path, lineNo, false, defines);
         out << "#line " << lineNo + 1 << " " << index << "\n";
       } else {
         out << line << "\n";
@@ -76,7 +115,7 @@ struct Preprocessor {
 
 ShaderSource loadShaderSource(const std::string& path, const std::vector<std::string>& defines) {
   Preprocessor pp;
-  pp.include(resolvePath(path, ""), "", 0, true, defines);
+  pp.include(resolvePath(path, nullptr), "", 0, true, defines);
   return ShaderSource{pp.out.str(), pp.files};
 }
 

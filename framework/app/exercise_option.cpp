@@ -1,0 +1,38 @@
+#include "app/exercise_option.h"
+
+#include "exercise/exercise_folder.h"
+#include "frame/registry.h"
+#include "frame/selection.h"
+#include "frame/stages.h"
+#include "gl/shader_overlay.h"
+
+namespace rtlab {
+
+OptionSpec exerciseOptionSpec() {
+  return {"--exercise", "", true, "DIR",
+          "run with an exercise folder's files in place of the shipped ones (activates its technique without -t)"};
+}
+
+bool applyExerciseOption(const Args& args, ResolvedFrame& frame) {
+  if (!args.has("--exercise")) return false;
+  const ExerciseFolder folder = readExerciseFolder(args.get("--exercise"));
+  gl::ShaderOverlay overlay;
+  for (const auto& f : folderReplacements(folder)) overlay[f.shaderRelative] = gl::ShaderReplacement{f.path, f.text, f.inMemory};
+  gl::setShaderOverlay(std::move(overlay));
+  if (!args.has("--technique")) {
+    TechniqueSelection selection(TechniqueRegistry::instance());
+    for (const auto& id : frame.techniques) selection.activate(id);
+    selection.activate(folder.def->technique);
+    frame.techniques = selection.ordered();
+  }
+  return true;
+}
+
+std::vector<ParamSpec> exerciseParams(const ExerciseDef& def) {
+  const TechniqueEntry& entry = TechniqueRegistry::instance().get(def.technique);
+  std::vector<ParamSpec> out = entry.info.params;
+  if (const StageInfo* stage = findStage(entry.info.stage)) out.insert(out.end(), stage->params.begin(), stage->params.end());
+  return out;
+}
+
+} // namespace rtlab

@@ -1,0 +1,141 @@
+#include "app/exercise_worker.h"
+
+#include "app/args.h"
+#include "app/frame_options.h"
+#include "app/measure.h"
+#include "app/reference_run.h"
+#include "exercise/exercise_folder.h"
+#include "frame/registry.h"
+#include "gl/shader_overlay.h"
+#include "platform/context.h"
+#include "reference/reference_registry.h"
+#include "render/renderer.h"
+#include "util/error.h"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <iterator>
+
+namespace rtlab {
+namespace {
+
+const char* filesName(WorkerFiles f) {
+  switch (f) {
+  case WorkerFiles::Solution: return "solution";
+  case WorkerFiles::Stub: return "stub";
+  case WorkerFiles::Student: return "student";
+  }
+  return "solution";
+}
+
+void installReplacements(const std::vector<ShaderFileReplacement>& files) {
+  gl::ShaderOverlay overlay;
+  for (const auto& f : files) overlay[f.shaderRelative] = gl::ShaderReplacement{f.path, f.text, f.inMemory};
+  gl::setShaderOverlay(std::move(overlay));
+}
+
+nlohmann::json shape(const Image& image) {
+  return nlohmann::json::array({image.width, image.height, image.channels, image.hasMask()});
+}
+
+void writeImage(const Image& image) {
+  std::fwrite(image.pixels.data(), sizeof(float), image.pixels.size(), stdout);
+  if (image.hasMask()) std::fwrite(image.mask.data(), sizeof(float), image.mask.size(), stdout);
+}
+
+void send(const nlohmann::json& header, const Image* image, const Image* reference) {
+  const std::string line = header.dump() + "\n";
+  std::fwrite(line.data(), 1, line.size(), stdout);
+  if (image) writeImage(*image);
+  if (reference) writeImage(*reference);
+  std::fflush(stdout);
+}
+
+} // namespace
+
+nlohmann::json workerRequestJson(const WorkerRequest& r) {
+  return {{"exercise", r.exercise}, {"files", filesName(r.files)}, {"dir", r.dir}, {"aov", r.aov},
+          {"backend", r.backend}, {"references", r.references}, {"views", viewsToJson(r.views)}, {"first", r.first}};
+}
+
+WorkerRequest workerRequestFromJson(const nlohmann::json& j) {
+  WorkerRequest r;
+  r.exercise = j.at("exercise").get<std::string>();
+  const std::string files = j.at("files").get<std::string>();
+  r.files = files == "student" ? WorkerFiles::Student : files == "stub" ? WorkerFiles::Stub : WorkerFiles::Solution;
+  r.dir = j.at("dir").get<std::string>();
+  r.aov = j.at("aov").get<std::string>();
+  r.backend = j.at("backend").get<std::string>();
+  r.references = j.at("references").get<bool>();
+  r.views = viewsFromJson(j.at("views"), "worker request");
+  r.first = j.at("first").get<std::size_t>();
+  return r;
+}
+
+std::vector<std::string> viewFrameArguments(const ExerciseView& view, const std::string& technique,
+                                            const std::string& backend) {
+  std::vector<std::string> args = {"--scene", view.scene, "--size", viewSize(view), "--seed", std::to_string(view.seed),
+                                   "--backend", backend};
+  for (const auto& t : view.techniques.empty() ? std::vector<std::string>{technique} : view.techniques) {
+    args.push_back("-t");
+    args.push_back(t);
+  }
+  for (const auto& [key, value] : view.set) {
+    args.push_back("--set");
+    args.push_back(key + "=" + value);
+  }
+  return args;
+}
+
+int runExerciseWorker() {
+  const std::string input((std::istreambuf_iterator<char>(std::cin)), std::istreambuf_iterator<char>());
+  const WorkerRequest request = workerRequestFromJson(nlohmann::json::parse(input));
+  const ExerciseDef& def = findExercise(request.exercise);
+  if (request.files == WorkerFiles::Stub) installReplacements(stubReplacements(def));
+  if (request.files == WorkerFiles::Student) installReplacements(folderReplacements(readExerciseFolder(request.dir)));
+
+  const TechniqueRegistry& registry = TechniqueRegistry::instance();
+  std::unique_ptr<Context> context;
+  for (std::size_t i = request.first; i < request.views.size(); ++i) {
+    const ExerciseView& view = request.views[i];
+    nlohmann::json header = {{"view", i}};
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      std::vector<std::string> strings = viewFrameArguments(view, def.technique, request.backend);
+      strings.insert(strings.begin(), {"rtlab", "worker"});
+      std::vector<char*> argv;
+      for (auto& s : strings) argv.push_back(s.data());
+      const Args args("exercise worker", frameOptionSpecs(), int(argv.size()), argv.data(), 2);
+      const ResolvedFrame frame = resolveFrame(args);
+      if (!context) context = createHeadlessContext(frame.options.backend);
+      const TimingMethod timing = resolveTiming(frame.options.timing, context->info().software);
+      Renderer renderer(registry);
+      renderer.setScene(frame.scene);
+      FrameOutputs outputs;
+      outputs.aovs = {request.aov};
+      renderMeasured(renderer, frame, outputs, timing, false);
+      const Image image = renderer.readAov(request.aov);
+      header["ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      header["status"] = "ok";
+      header["image"] = shape(image);
+      Image reference;
+      if (request.references) {
+        const ReferenceEntry& entry = ReferenceRegistry::instance().get(request.aov);
+        reference = renderReferenceFrame(renderer, frame, entry.aov, view.spp > 0 ? view.spp : entry.defaultSpp, false);
+        header["reference"] = shape(reference);
+      }
+      send(header, &image, request.references ? &reference : nullptr);
+    } catch (const Error& e) {
+      header["status"] = e.code() == ExitCode::Shader ? "compile_error" : "error";
+      header["message"] = e.what();
+      header["code"] = int(e.code());
+      header["ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      send(header, nullptr, nullptr);
+      if (e.code() == ExitCode::NoContext) return int(e.code());
+    }
+  }
+  return 0;
+}
+
+} // namespace rtlab
