@@ -17,6 +17,7 @@ struct Difference {
   double rmse = 0.0;
   double fraction = 0.0;
   double meanSigned = 0.0;
+  std::size_t darker = 0, brighter = 0; // differing pixels below / above the other image
   std::size_t nonFinite = 0;
   std::size_t validPixels = 0;
 };
@@ -31,7 +32,7 @@ Difference difference(const Image& a, const Image& b, double pixelTolerance, boo
     if (!valid(b, p)) continue;
     ++d.validPixels;
     bool finitePixel = true, differs = false;
-    double pixelSq = 0.0, pixelSigned = 0.0;
+    double pixelSq = 0.0, pixelSigned = 0.0, worst = 0.0;
     for (int k = 0; k < c; ++k) {
       double va = a.pixels[p * c + k];
       const double vb = b.pixels[p * c + k];
@@ -43,7 +44,10 @@ Difference difference(const Image& a, const Image& b, double pixelTolerance, boo
       const double diff = va - vb;
       pixelSq += diff * diff;
       pixelSigned += diff;
-      differs = differs || std::abs(diff) > pixelTolerance;
+      if (std::abs(diff) > pixelTolerance) {
+        differs = true;
+        if (std::abs(diff) > std::abs(worst)) worst = diff;
+      }
     }
     if (!finitePixel) {
       ++d.nonFinite;
@@ -54,6 +58,8 @@ Difference difference(const Image& a, const Image& b, double pixelTolerance, boo
     sumSq += pixelSq / c;
     sumSigned += pixelSigned / c;
     differing += differs ? 1 : 0;
+    d.darker += worst < 0.0 ? 1 : 0;
+    d.brighter += worst > 0.0 ? 1 : 0;
   }
   if (finite > 0) {
     d.rmse = std::sqrt(sumSq / double(finite));
@@ -160,8 +166,10 @@ ViewComparison compareWithSolution(const Image& student, const Image& solution, 
   std::string what = percent(d.fraction) + " of the pixels differ by more than " + formatNumber(tolerance.pixel) +
                      " (allowed " + percent(tolerance.fraction) + "), RMSE " + short3(d.rmse) + " (allowed " +
                      formatNumber(tolerance.rmse) + ")";
-  if (std::abs(d.meanSigned) > 0.5 * d.rmse)
-    what += d.meanSigned < 0 ? "; mostly darker than the solution (more shadow or occlusion)"
+  // The direction when at least 80% of the differing pixels agree on it.
+  const double differing = double(d.darker + d.brighter);
+  if (differing > 0 && std::max(d.darker, d.brighter) >= 0.8 * differing)
+    what += d.darker > d.brighter ? "; mostly darker than the solution (more shadow or occlusion)"
                              : "; mostly brighter than the solution (less shadow or occlusion)";
   out.cause = "differs: " + what;
   return out;
