@@ -88,6 +88,29 @@ float aoEvaluate(ivec2 px, AoSurface s) {
     float horizonMeasure = sliceMeasure(sl, horizon);
 #endif
     int taps = tapsInFrame(centre, dir, firstPx, stepPx, offset);
+    // exercise(hbao-march): begin
+    // task: The horizon march along the unit direction `dir` (frame pixels) from the frame point
+    // task: `centre` of AO texel `px`. Inputs: the surface point s.p, the slice `sl` (makeSlice),
+    // task: r2 = uRadius^2 and the starting horizon: horizonCos (its cosine) and horizonMeasure
+    // task: (its measure, sliceMeasure). Output: the sum `occlusion` (declared above).
+    // task: For each tap i < taps (the taps inside the frame):
+    // task: 1. step: q = centre + dir * (firstPx + (i + offset) * stepPx), in the AO texel
+    // task:    tap = clamp(ivec2(q * invScale), ivec2(0), uAoSize - 1);
+    // task: 2. sample: texel = texelFetch(uAoView, tap, 0) (.xyz normal, .w linear depth); skip the
+    // task:    tap when texel.w <= 0 (sky never occludes) or tap == px (the centre's own texel);
+    // task: 3. the offset from P: o = surfaceThrough(q, tap, texel) - s.p, d2 = dot(o, o), and the
+    // task:    tap's angle from the view vector as a cosine, c = min(tapCos(sl, o), sl.lo.c)
+    // task:    (at least lo);
+    // task: 4. horizon update: the tap raises the horizon when 0 < d2 <= r2 and c > horizonCos (a
+    // task:    larger cosine is a higher horizon; taps beyond the radius are skipped, the march
+    // task:    goes on). Then, with the attenuation W = 1 - uAttenuation * d2 / r2 and
+    // task:    m = sliceMeasure(sl, angleOf(c)):
+    // task:    occlusion += W * (horizonMeasure - m); horizonMeasure = m; horizonCos = c.
+    // task: Optional: AO_VISIT(q / vec2(uFullSize), 1.0 if the tap raised the horizon, else 0.0)
+    // task: per tap (the hbao.pattern debug view; no effect on the image). Faster, same result:
+    // task: with uAttenuation = 0 (W = 1) the sum telescopes to horizonMeasure(start) -
+    // task: sliceMeasure(sl, angleOf(highest c)), one angle per direction (the macro HBAO_WEIGHTED
+    // task: is 0 exactly then).
     for (int i = 0; i < taps; ++i) {
       vec2 q = centre + dir * (firstPx + (float(i) + offset) * stepPx);
       ivec2 tap = clamp(ivec2(q * invScale), ivec2(0), uAoSize - 1);  // q >= 0: truncation is floor
@@ -115,6 +138,9 @@ float aoEvaluate(ivec2 px, AoSurface s) {
     // per tap.
     if (horizonCos > horizon.c) occlusion += horizonMeasure - sliceMeasure(sl, angleOf(horizonCos));
 #endif
+    // exercise: stub
+    // // no tap raises the horizon: this direction adds no occlusion (AO 1, unoccluded)
+    // exercise: end
   }
   // Cosine: 1 - occluded / open measure, exactly 1 where nothing rises above the tangent plane
   // whatever the directions. Solid angle: Bavoil's 1 - mean of (sin h - sin t) W.

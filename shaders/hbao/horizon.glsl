@@ -53,9 +53,22 @@ Slice makeSlice(vec3 v, vec3 normal, vec3 tangent) {
 // The slice measure of the directions from 0 up to angle t (increasing in t).
 float sliceMeasure(Slice s, Angle t) {
 #if HBAO_INTEGRAL == 1
+  // exercise(hbao-slice-integral): begin
+  // task: The cosine-weighted measure of the slice's directions from the view vector (angle 0) up
+  // task: to the angle t, n being the angle of the normal projected into the slice:
+  // task:   I(t) = integral from 0 to t of |Np| cos(theta - n) sin(theta) d theta
+  // task:        = |Np| / 4 * (cos n - cos(2t - n) + 2 t sin n).
+  // task: Inputs: s.np = |Np|, s.cosN = cos n, s.sinN = sin n (s.n = n), and t.a, t.c, t.s = t,
+  // task: cos t and sin t. Return I(t).
+  // task: Hint: cos(2t - n) = cos 2t cos n + sin 2t sin n needs no trigonometric call.
   // cos(2t - n) = cos 2t cos n + sin 2t sin n
   float cos2tn = (2.0 * t.c * t.c - 1.0) * s.cosN + 2.0 * t.s * t.c * s.sinN;
   return 0.25 * s.np * (s.cosN - cos2tn + 2.0 * t.a * s.sinN);
+  // exercise: stub
+  // // every slice measures 0: no direction is open and none occluded, and hbao.frag returns AO 1
+  // // (unoccluded) when the open measure is 0
+  // return 0.0;
+  // exercise: end
 #else
   return -t.c;
 #endif

@@ -45,6 +45,25 @@ float aoEvaluate(ivec2 px, AoSurface s) {
   float angle = uRotate ? 2.0 * kPi * aoNoise(px, 0) : 0.0;
   float jitter = uRotate ? aoNoise(px, 1) : 0.0;
   mat3 frame = aoTangentFrame(s.n, angle);
+  // exercise(ssao-kernel-test): begin
+  // task: The kernel test. Inputs: the surface point s.p (view space: the camera sits at the origin
+  // task: and looks down -z), its linear depth s.depth, the tangent frame `frame` (columns: two
+  // task: tangents and the normal, turned by the per-pixel angle) and `jitter`.
+  // task: For each i < uSampleCount:
+  // task: 1. the sample q = s.p + uRadius * (frame * kernelPoint(i, uSampleCount, jitter));
+  // task: 2. project it: aoProject(q, uv, tap) (out vec2 uv, out ivec2 tap) returns false behind
+  // task:    the camera or off screen, where the sample is unoccluded (occlusion 0);
+  // task: 3. read the stored linear depth d = aoStoredDepth(tap) (0 on sky, which never occludes);
+  // task:    the sample's own depth is -q.z. It is occluded (occlusion 1) when d > 0 and
+  // task:    d < -q.z - uBias;
+  // task: 4. range check of an occluded sample, by uRangeCheck: 0 none (keep 1); 1 smooth (Crytek):
+  // task:    occlusion = smoothstep(0, 1, uRadius / max(|s.depth - d|, 1e-4)); 2 distance:
+  // task:    occlusion = 1 when the stored point aoTexelPosition(tap, d) lies within uRadius
+  // task:    of s.p, else 0;
+  // task: 5. call AO_VISIT(uv, occlusion) (the ssao.pattern debug view; no effect on the image) and
+  // task:    add the occlusion to a sum.
+  // task: Output: float visible = 1 - (sum of the occlusions) / uSampleCount, the unoccluded
+  // task: fraction (the code below doubles it for the sphere kernel, and applies uPower).
   float occluded = 0.0;
   for (int i = 0; i < uSampleCount; ++i) {
     vec3 q = s.p + uRadius * (frame * kernelPoint(i, uSampleCount, jitter));
@@ -67,6 +86,10 @@ float aoEvaluate(ivec2 px, AoSurface s) {
     occluded += occlusion;
   }
   float visible = 1.0 - occluded / float(max(uSampleCount, 1));
+  // exercise: stub
+  // // no kernel point is tested, so none is occluded: AO 1 (unoccluded) everywhere
+  // float visible = 1.0;
+  // exercise: end
 #ifdef KERNEL_SPHERE
   visible = clamp(2.0 * visible, 0.0, 1.0); // half the sphere lies behind a flat surface
 #endif
