@@ -5,6 +5,7 @@
 #include "util/error.h"
 
 #include <cmath>
+#include <future>
 #include <iostream>
 
 namespace rtlab {
@@ -46,13 +47,16 @@ double rmse(const Image& a, const Image& b) {
 GradeResult gradeExercise(const ExerciseFolder& folder, const GradeOptions& options) {
   // The solution and the stubs are rtlab's own code: a generous limit only guards against a hang.
   const double trustedLimit = std::max(300.0, 10.0 * options.timeLimitSeconds);
+  // The solution (with the references) and the stubs render side by side; the student's files
+  // render afterwards, alone, so that their time limit and `ms` are not shared with other work.
+  auto stubRuns = std::async(std::launch::async, [&] { return run(folder, options, WorkerFiles::Stub, trustedLimit, "the stubs"); });
   const auto solution = run(folder, options, WorkerFiles::Solution, trustedLimit, "the solution");
+  const auto stub = stubRuns.get();
   for (std::size_t i = 0; i < solution.size(); ++i)
     if (solution[i].status != ViewRunStatus::Ok) {
       const ExitCode code = solution[i].code > 1 ? ExitCode(solution[i].code) : ExitCode::Internal;
       throw Error(code, "view '" + options.views[i].name + "': the solution did not render: " + solution[i].message);
     }
-  const auto stub = run(folder, options, WorkerFiles::Stub, trustedLimit, "the stubs");
   const auto student = run(folder, options, WorkerFiles::Student, options.timeLimitSeconds, "the student's files");
 
   GradeResult result;

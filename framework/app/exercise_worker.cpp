@@ -97,6 +97,9 @@ int runExerciseWorker() {
 
   const TechniqueRegistry& registry = TechniqueRegistry::instance();
   std::unique_ptr<Context> context;
+  // One renderer for every view: its program cache compiles each program once (Mesa's disk cache is
+  // off in workers). It is made anew after a view that failed, whose frame may have stopped midway.
+  std::unique_ptr<Renderer> renderer;
   for (std::size_t i = request.first; i < request.views.size(); ++i) {
     const ExerciseView& view = request.views[i];
     nlohmann::json header = {{"view", i}};
@@ -110,19 +113,19 @@ int runExerciseWorker() {
       const ResolvedFrame frame = resolveFrame(args);
       if (!context) context = createHeadlessContext(frame.options.backend);
       const TimingMethod timing = resolveTiming(frame.options.timing, context->info().software);
-      Renderer renderer(registry);
-      renderer.setScene(frame.scene);
+      if (!renderer) renderer = std::make_unique<Renderer>(registry);
+      renderer->setScene(frame.scene);
       FrameOutputs outputs;
       outputs.aovs = {request.aov};
-      renderMeasured(renderer, frame, outputs, timing, false);
-      const Image image = renderer.readAov(request.aov);
+      renderMeasured(*renderer, frame, outputs, timing, false);
+      const Image image = renderer->readAov(request.aov);
       header["ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       header["status"] = "ok";
       header["image"] = shape(image);
       Image reference;
       if (request.references) {
         const ReferenceEntry& entry = ReferenceRegistry::instance().get(request.aov);
-        reference = renderReferenceFrame(renderer, frame, entry.aov, view.spp > 0 ? view.spp : entry.defaultSpp, false);
+        reference = renderReferenceFrame(*renderer, frame, entry.aov, view.spp > 0 ? view.spp : entry.defaultSpp, false);
         header["reference"] = shape(reference);
       }
       send(header, &image, request.references ? &reference : nullptr);
@@ -132,6 +135,7 @@ int runExerciseWorker() {
       header["code"] = int(e.code());
       header["ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       send(header, nullptr, nullptr);
+      renderer.reset();
       if (e.code() == ExitCode::NoContext) return int(e.code());
     }
   }
