@@ -84,8 +84,8 @@ void main() {
   // task: raw stored depth d = storedDepth(coord, rotation * uSearchTaps[i] * searchTexels) (offset
   // task: in map texels). A tap with d < zRef (zRef: the receiver's map depth minus the constant
   // task: bias) is a blocker: add its linear depth shadowLinearDepth(d) to blockerSum and count it
-  // task: in blockers. The code below turns them into the mean blocker depth zB = blockerSum / blockers;
-  // task: no blocker means lit.
+  // task: in blockers. The code below turns them into the mean blocker depth
+  // task: zB = blockerSum / blockers; no blocker means lit.
   if (inside) {
     for (int i = 0; i < uSearchTapCount; ++i) {
       float d = storedDepth(coord, rotation * uSearchTaps[i] * searchTexels);

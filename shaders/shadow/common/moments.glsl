@@ -79,14 +79,16 @@ float hamburger4Msm(vec4 moments, float t, float momentBias) {
   // task: 1. Bias: b = mix(moments, vec4(0.5), momentBias) keeps the Hankel matrix invertible.
   // task: 2. Solve B c = (1, t, t^2) with B = [[1, b1, b2], [b1, b2, b3], [b2, b3, b4]], by its
   // task:    Cholesky factorization B = L D L^T: d22 = b2 - b1^2, l32 = (b3 - b1 b2) / d22,
-  // task:    d33 = b4 - b2^2 - l32 (b3 - b1 b2); forward substitution, division by D, back substitution.
+  // task:    d33 = b4 - b2^2 - l32 (b3 - b1 b2); then forward substitution, division by D and
+  // task:    back substitution.
   // task:    Use these steps, not inverse(B): B is nearly singular, and a general 3x3 inverse in
   // task:    32-bit floats loses the digits the bound needs (measured: it fails 3 of 5 test views).
   // task: 3. The roots z2 <= z3 of c1 + c2 z + c3 z^2: with p = c2 / c3, q = c1 / c3,
   // task:    r = sqrt(max(p^2 / 4 - q, 0)): z2 = -p/2 - r, z3 = -p/2 + r.
-  // task: 4. The three-point distribution on {t, z2, z3} with moments b: if z3 < t, both roots are
-  // task:    in front: return 1 - wt, wt = (z2 z3 - b1 (z2 + z3) + b2) / ((t - z2)(t - z3)); else if
-  // task:    z2 < t, return w2 = (t z3 - b1 (t + z3) + b2) / ((z2 - t)(z2 - z3)); else return 0.
+  // task: 4. The three-point distribution on {t, z2, z3} with moments b: if z3 < t, both roots
+  // task:    are in front: return 1 - wt, wt = (z2 z3 - b1 (z2 + z3) + b2) / ((t - z2)(t - z3));
+  // task:    else if z2 < t, return w2 = (t z3 - b1 (t + z3) + b2) / ((z2 - t)(z2 - z3));
+  // task:    else return 0.
   // task:    Clamp the returned weights to [0,1].
   vec4 b = mix(moments, vec4(0.5), momentBias);
   // Cholesky factorization of the Hankel matrix [[1,b1,b2],[b1,b2,b3],[b2,b3,b4]] (= L D L^T).

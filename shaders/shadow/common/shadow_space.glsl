@@ -93,7 +93,8 @@ float shadowTestHard(vec3 q) {
   // task: light's frustum: return 1.0 (lit). Otherwise return 1.0 when the biased receiver depth
   // task: coord.z - uConstantBias is <= the depth stored at coord.xy, else 0.0. uShadowMap is a
   // task: sampler2DShadow (compare mode GL_LEQUAL, nearest texel): texture(uShadowMap,
-  // task: vec3(uv, reference)) returns exactly that 0/1 comparison of reference with the stored depth.
+  // task: vec3(uv, reference)) returns exactly that 0/1 comparison of reference with the stored
+  // task: depth.
   vec3 coord;
   if (!shadowCoord2D(q, coord)) return 1.0;
   return texture(uShadowMap, vec3(coord.xy, coord.z - uConstantBias));
