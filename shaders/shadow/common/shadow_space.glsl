@@ -40,7 +40,8 @@ bool shadowFacesAway(vec3 p, vec3 n) {
 #endif
 }
 
-// The receiver point after the normal offset (Holbein 2011's "normal offset shadows").
+// The receiver point after the normal offset (Holbert 2011, "Normal offset shadows"; the papers
+// are listed in techniques/common/shadow/README.md).
 vec3 shadowReceiver(vec3 p, vec3 geometricNormal) {
   // exercise(shadow_map-normal_offset): begin
   // task: Normal offset. Return the receiver q = p + n * (b * w): the surface point p moved along
