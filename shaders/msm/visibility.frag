@@ -50,10 +50,8 @@ void main() {
     visibility = 0.0;
   } else if (inside && mask > 0.0) {
     float search = clamp(shadowSearchTexels(zR), 1.0, uMaxSearch);
-    vec4 m = filteredMoments(coord.xy, search);
-    float unoccluded = chebyshevUpperBound(m.xy, t, 1e-7);
-    if (unoccluded < 0.99) {
-      float zOcc = clamp((m.x - unoccluded * t) / (1.0 - unoccluded), 0.0, t);
+    float zOcc;
+    if (momentBlockerDepth(filteredMoments(coord.xy, search).xy, t, 1e-7, zOcc)) {
       radius = clamp(shadowPenumbraTexels(zR, uLightNear + zOcc * (uLightFar - uLightNear)), uMinPenumbra, uMaxPenumbra);
       visibility = 1.0 - hamburger4Msm(filteredMoments(coord.xy, radius), t, uMomentBias);
       blockerShown = zOcc;

@@ -78,6 +78,14 @@ void main() {
   mat2 rotation = tapRotation();
   float blockerSum = 0.0;
   int blockers = 0;
+  // exercise(pcss-blocker): begin
+  // task: Blocker search (Fernando 2005), only when the receiver is inside the map (`inside`).
+  // task: For each of the uSearchTapCount taps uSearchTaps[i] (points of the unit disk), read the
+  // task: raw stored depth d = storedDepth(coord, rotation * uSearchTaps[i] * searchTexels) (offset
+  // task: in map texels). A tap with d < zRef (zRef: the receiver's map depth minus the constant
+  // task: bias) is a blocker: add its linear depth shadowLinearDepth(d) to blockerSum and count it
+  // task: in blockers. The code below turns them into the mean blocker depth
+  // task: zB = blockerSum / blockers; no blocker means lit.
   if (inside) {
     for (int i = 0; i < uSearchTapCount; ++i) {
       float d = storedDepth(coord, rotation * uSearchTaps[i] * searchTexels);
@@ -87,6 +95,9 @@ void main() {
       }
     }
   }
+  // exercise: stub
+  // // no blocker found: every receiver is lit
+  // exercise: end
   // 2. Penumbra width at the receiver, in map texels.
   float radius = 0.0;
   float zB = 0.0;

@@ -38,11 +38,8 @@ void main() {
     visibility = 0.0;
   } else if (inside && mask > 0.0) {
     float search = clamp(shadowSearchTexels(zR), 1.0, uMaxSearch);
-    vec2 m = boxMoments(coord.xy, search).xy;
-    float unoccluded = chebyshevUpperBound(m, t, uMinVariance);
-    // Guards: t <= mu or P ~ 1 means no blocker (lit, never 0/0); z_occ is kept in [0, t].
-    if (unoccluded < 0.99) {
-      float zOcc = clamp((m.x - unoccluded * t) / (1.0 - unoccluded), 0.0, t);
+    float zOcc;
+    if (momentBlockerDepth(boxMoments(coord.xy, search).xy, t, uMinVariance, zOcc)) {
       float zB = linearFromNormalized(zOcc);
       radius = clamp(shadowPenumbraTexels(zR, zB), uMinPenumbra, uMaxPenumbra);
       vec2 f = boxMoments(coord.xy, radius).xy;

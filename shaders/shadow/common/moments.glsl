@@ -28,10 +28,41 @@ vec4 boxMoments(vec2 uv, float radius) {
 
 // P(depth >= t) <= sigma^2 / (sigma^2 + (t - mu)^2) for t > mu (Chebyshev); 1 otherwise.
 float chebyshevUpperBound(vec2 m, float t, float minVariance) {
+  // exercise(vssm-chebyshev): begin
+  // task: Chebyshev's one-tailed bound (Donnelly & Lauritzen 2006). m = (mu, E[z^2]): the mean
+  // task: depth and the mean squared depth over a box of the map; t: the receiver's depth. The
+  // task: variance is sigma^2 = max(E[z^2] - mu^2, minVariance) (the floor keeps planar receivers
+  // task: from acne). Return 1.0 when t <= mu (the receiver is in front of the mean: unoccluded);
+  // task: otherwise the upper bound of the unoccluded fraction P(z >= t) <= p_max =
+  // task: sigma^2 / (sigma^2 + (t - mu)^2).
   float variance = max(m.y - m.x * m.x, minVariance);
   if (t <= m.x) return 1.0;
   float d = t - m.x;
   return variance / (variance + d * d);
+  // exercise: stub
+  // return 1.0; // unoccluded: every receiver is lit
+  // exercise: end
+}
+
+// Mean blocker depth over a box with moments m = (mu, E[z^2]) (Yang et al. 2010, as VSSM and MSM
+// estimate it): false when the box holds no blocker for a receiver at t (lit).
+bool momentBlockerDepth(vec2 m, float t, float minVariance, out float zOcc) {
+  // exercise(vssm-blocker): begin
+  // task: Blocker estimate (Yang et al. 2010). p = chebyshevUpperBound(m, t, minVariance) is the
+  // task: unoccluded fraction of the box. When p >= 0.99 (this includes t <= mu) the box holds no
+  // task: blocker: return false (lit; zOcc is not used then; never divide by 1 - p ~ 0). Otherwise
+  // task: split the mean depth into unoccluded texels, assumed at the receiver's depth t, and
+  // task: blockers: mu = p * t + (1 - p) * zOcc, so set zOcc = (mu - p * t) / (1 - p), clamped to
+  // task: [0, t], and return true. mu = m.x; depths are normalized linear light depths in [0,1].
+  zOcc = t;
+  float p = chebyshevUpperBound(m, t, minVariance);
+  if (p >= 0.99) return false;
+  zOcc = clamp((m.x - p * t) / (1.0 - p), 0.0, t);
+  return true;
+  // exercise: stub
+  // zOcc = t;
+  // return false; // no blocker found: every receiver is lit
+  // exercise: end
 }
 
 // Reduces light bleeding by cutting off the lowest `amount` of the bound (Lauritzen 2007).
@@ -41,6 +72,24 @@ float reduceBleeding(float p, float amount) { return clamp((p - amount) / (1.0 -
 // depth distribution in front of t, as bounded by the three-point distribution with support
 // {t, z2, z3} that matches the biased moments b. Returns the shadow intensity in [0,1].
 float hamburger4Msm(vec4 moments, float t, float momentBias) {
+  // exercise(msm-hamburger): begin
+  // task: Hamburger 4MSM (Peters & Klein 2015, algorithm 2). moments = (b1, b2, b3, b4): the box
+  // task: means of z, z^2, z^3, z^4; t: the receiver's depth. Return the shadow intensity in [0,1]
+  // task: (the code below uses 1 - it as the visibility).
+  // task: 1. Bias: b = mix(moments, vec4(0.5), momentBias) keeps the Hankel matrix invertible.
+  // task: 2. Solve B c = (1, t, t^2) with B = [[1, b1, b2], [b1, b2, b3], [b2, b3, b4]], by its
+  // task:    Cholesky factorization B = L D L^T: d22 = b2 - b1^2, l32 = (b3 - b1 b2) / d22,
+  // task:    d33 = b4 - b2^2 - l32 (b3 - b1 b2); then forward substitution, division by D and
+  // task:    back substitution.
+  // task:    Use these steps, not inverse(B): B is nearly singular, and a general 3x3 inverse in
+  // task:    32-bit floats loses the digits the bound needs (measured: it fails 3 of 5 test views).
+  // task: 3. The roots z2 <= z3 of c1 + c2 z + c3 z^2: with p = c2 / c3, q = c1 / c3,
+  // task:    r = sqrt(max(p^2 / 4 - q, 0)): z2 = -p/2 - r, z3 = -p/2 + r.
+  // task: 4. The three-point distribution on {t, z2, z3} with moments b: if z3 < t, both roots
+  // task:    are in front: return 1 - wt, wt = (z2 z3 - b1 (z2 + z3) + b2) / ((t - z2)(t - z3));
+  // task:    else if z2 < t, return w2 = (t z3 - b1 (t + z3) + b2) / ((z2 - t)(z2 - z3));
+  // task:    else return 0.
+  // task:    Clamp the returned weights to [0,1].
   vec4 b = mix(moments, vec4(0.5), momentBias);
   // Cholesky factorization of the Hankel matrix [[1,b1,b2],[b1,b2,b3],[b2,b3,b4]] (= L D L^T).
   float d22 = b.y - b.x * b.x;
@@ -72,4 +121,7 @@ float hamburger4Msm(vec4 moments, float t, float momentBias) {
     return clamp(w2, 0.0, 1.0);
   }
   return 0.0;
+  // exercise: stub
+  // return 0.0; // no shadow: every receiver is lit
+  // exercise: end
 }

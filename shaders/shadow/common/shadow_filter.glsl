@@ -62,6 +62,18 @@ float shadowFilter(vec3 q, float radiusTexels, int tapCount) {
   bool inside = shadowCoord2D(q, coord);
   vec2 slope = uReceiverPlaneBias ? receiverPlaneSlope(coord) : vec2(0.0); // all lanes: derivatives
   if (!inside) return 1.0;
+  // exercise(pcf-filter): begin
+  // task: Percentage-closer filter (Reeves et al. 1987): average depth comparisons, never depths.
+  // task: coord.xy is the receiver's map uv, coord.z its map depth. For each tap i < tapCount:
+  // task: offset in uv o = rotation * uTaps[i] * radiusTexels / uMapResolution, with
+  // task: rotation = tapRotation() (per-pixel blue-noise rotation, identity when off) and uTaps[i]
+  // task: a point of the unit disk (rotation * uTaps[i], not uTaps[i] * rotation, which rotates the
+  // task: other way: another noise pattern, graded as a difference); receiver-plane bias
+  // task: planeBias = clamp(dot(slope, o), -kMaxReceiverPlaneBias, kMaxReceiverPlaneBias), with
+  // task: slope the receiver's depth per uv (computed above; zero when that bias is off);
+  // task: the tap passes (1) or not (0) by the hardware comparison
+  // task: texture(uShadowMap, vec3(coord.xy + o, coord.z + planeBias - uConstantBias)).
+  // task: Return the number of passing taps divided by tapCount (1 = lit, 0 = shadowed).
   float scale = radiusTexels / uMapResolution;
   mat2 rotation = tapRotation();
   float lit = 0.0;
@@ -71,5 +83,8 @@ float shadowFilter(vec3 q, float radiusTexels, int tapCount) {
     lit += texture(uShadowMap, vec3(coord.xy + o, coord.z + planeBias - uConstantBias));
   }
   return lit / float(tapCount);
+  // exercise: stub
+  // return 1.0; // lit: every tap passes
+  // exercise: end
 }
 #endif

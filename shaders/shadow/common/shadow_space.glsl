@@ -40,9 +40,18 @@ bool shadowFacesAway(vec3 p, vec3 n) {
 #endif
 }
 
-// The receiver point after the normal offset (Holbein 2011's "normal offset shadows").
+// The receiver point after the normal offset (Holbert 2011, "Normal offset shadows"; the papers
+// are listed in techniques/common/shadow/README.md).
 vec3 shadowReceiver(vec3 p, vec3 geometricNormal) {
+  // exercise(shadow_map-normal_offset): begin
+  // task: Normal offset. Return the receiver q = p + n * (b * w): the surface point p moved along
+  // task: its unit geometric normal n (geometricNormal) by b = uNormalBias map texels, where
+  // task: w = shadowTexelWorld(p) is the world size of one map texel at p. The offset grows with
+  // task: the texel, so it removes the acne that the texel's depth slope causes.
   return p + geometricNormal * (uNormalBias * shadowTexelWorld(p));
+  // exercise: stub
+  // return p; // no offset: the receiver is the surface point itself
+  // exercise: end
 }
 
 // Perspective depth in [0,1] of a point at axis distance z (cube faces).
@@ -79,9 +88,20 @@ float shadowTestHard(vec3 q) {
   if (!shadowCoordCube(q, dir, depth)) return 1.0;
   return texture(uShadowMap, vec4(dir, depth - uConstantBias));
 #else
+  // exercise(shadow_map-depth_test): begin
+  // task: Depth comparison. Project q into the map with shadowCoord2D(q, coord) (coord.xy: map
+  // task: uv, coord.z: q's map depth, both in [0,1]); when it returns false, q is outside the
+  // task: light's frustum: return 1.0 (lit). Otherwise return 1.0 when the biased receiver depth
+  // task: coord.z - uConstantBias is <= the depth stored at coord.xy, else 0.0. uShadowMap is a
+  // task: sampler2DShadow (compare mode GL_LEQUAL, nearest texel): texture(uShadowMap,
+  // task: vec3(uv, reference)) returns exactly that 0/1 comparison of reference with the stored
+  // task: depth.
   vec3 coord;
   if (!shadowCoord2D(q, coord)) return 1.0;
   return texture(uShadowMap, vec3(coord.xy, coord.z - uConstantBias));
+  // exercise: stub
+  // return 1.0; // lit: no point is in shadow
+  // exercise: end
 #endif
 }
 
@@ -122,6 +142,14 @@ float shadowSearchTexels(float zR) {
 
 // Penumbra half-width (texels at the receiver) from similar triangles, blocker at linear depth zB.
 float shadowPenumbraTexels(float zR, float zB) {
+  // exercise(pcss-penumbra): begin
+  // task: Penumbra estimate (Fernando 2005): blocker, receiver and light are parallel planes; by
+  // task: similar triangles the penumbra's half-width in world units at the receiver is
+  // task: w = (zR - zB) * uLightSize / zB for a spot or point light (uLightSize: the light disk's
+  // task: radius) and w = (zR - zB) * uLightSize for a directional light (SHADOW_PROJECTION == 0;
+  // task: uLightSize = tan of the cone's angular radius). zR, zB: linear light-space depths of the
+  // task: receiver and the mean blocker. Guards: use max(zR - zB, 0.0), and max(zB, 1e-6) as the
+  // task: divisor. Return w in map texels at the receiver: w / shadowMapWidth(zR) * uMapResolution.
   float dz = max(zR - zB, 0.0);
 #if SHADOW_PROJECTION == 0
   float world = dz * uLightSize;
@@ -129,4 +157,7 @@ float shadowPenumbraTexels(float zR, float zB) {
   float world = dz * uLightSize / max(zB, 1e-6);
 #endif
   return world / shadowMapWidth(zR) * uMapResolution;
+  // exercise: stub
+  // return 0.0; // no penumbra: the filter keeps its minimum radius
+  // exercise: end
 }
