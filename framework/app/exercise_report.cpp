@@ -7,6 +7,7 @@
 #include "util/error.h"
 #include "util/number_format.h"
 
+#include <cstdio>
 #include <filesystem>
 
 namespace rtlab {
@@ -17,7 +18,7 @@ namespace {
 constexpr float kHeatmapMax = 0.25f;
 
 const char* kCss = R"(
-figure.cell img { width: 320px; image-rendering: pixelated; display: block; }
+figure.cell img { width: 240px; image-rendering: pixelated; display: block; }
 .passed { color: #1a7f37; font-weight: 600; }
 .failed, .timeout, .crashed, .compile_error { color: #b42318; font-weight: 600; }
 .cause { background: #fff4e5; border-left: 4px solid #f79009; padding: 0.5em 1em; }
@@ -31,14 +32,16 @@ std::string figure(const Image& image, const std::string& caption, PngEncoding e
 }
 
 std::string missing(const std::string& caption, const std::string& why) {
-  return "<figure class=\"cell\"><div style=\"width:320px;height:180px;background:#eee;display:flex;align-items:center;"
+  return "<figure class=\"cell\"><div style=\"width:240px;height:135px;background:#eee;display:flex;align-items:center;"
          "justify-content:center\">" + html::escape(why) + "</div><figcaption>" + html::escape(caption) + "</figcaption></figure>";
 }
 
-std::string value(const std::optional<double>& v, int digits = 4) {
+// Figures with 3 significant digits: enough to compare with the bounds.
+std::string value(const std::optional<double>& v) {
   if (!v || !std::isfinite(*v)) return "-";
-  (void)digits;
-  return formatNumber(*v);
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.3g", *v);
+  return text;
 }
 
 std::string statusSpan(const std::string& status) {
@@ -71,7 +74,7 @@ std::string viewPage(const ExerciseFolder& folder, const GradeOptions& options, 
                         "<= " + formatNumber(t.fraction)},
                        {"RMSE vs reference (student)", value(g.rmseVsReference), "informative"},
                        {"RMSE vs reference (solution)", value(g.solutionRmseVsReference), "informative"},
-                       {"time (student's render)", html::formatMs(g.ms), "<= " + formatNumber(options.timeLimitSeconds) + " s"}});
+                       {"time (student's render)", html::formatMs(g.ms) + " ms", "<= " + formatNumber(options.timeLimitSeconds) + " s"}});
   return html::page(folder.def->id + " — " + g.name, body, kCss);
 }
 
@@ -96,7 +99,7 @@ void writeGradeReport(const std::string& dir, const ExerciseFolder& folder, cons
     rows.push_back({"<a href=\"" + html::escape(pageFile(g)) + "\">" + html::escape(g.name) + "</a>", statusSpan(g.status),
                     html::escape(value(g.rmseVsSolution)), html::escape(value(g.differingFraction)),
                     html::escape(value(g.rmseVsReference)), html::escape(value(g.solutionRmseVsReference)),
-                    html::escape(html::formatMs(g.ms)), html::escape(g.cause)});
+                    html::escape(html::formatMs(g.ms) + " ms"), html::escape(g.cause)});
   }
   std::string body = "<h1>Exercise " + html::escape(folder.def->id) + ": " + html::escape(folder.def->title) + "</h1>";
   body += "<p>Folder <code>" + html::escape(folder.dir) + "</code>. Score <b>" + std::to_string(result.score) +

@@ -4,8 +4,11 @@
 // fails. Then the safety rules: an endless loop times out and grading completes, a syntax error is
 // exit 5 naming the student's file:line, `new` never overwrites, a folder that is not an exercise is
 // exit 3, nothing is written outside the output folder, and the grade is the same on EGL and OSMesa.
+#include "chromium.h"
 #include "process.h"
 #include "test_util.h"
+
+#include "image/image.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -347,4 +350,39 @@ TEST(ExerciseCli, RenderWithExerciseUsesTheStudentsFilesAndActivatesTheTechnique
                                       "--out", (dir / "solution.pfm").string()}).exitCode, 0);
   const auto same = runProcess(RTLAB_BINARY, {"compare", (dir / "shipped.pfm").string(), (dir / "solution.pfm").string(), "--json"});
   EXPECT_EQ(json::parse(same.out)["rmse"].get<double>(), 0.0);
+}
+
+// The report (docs/exercises.md "Report"): index.html and a page per view with the student's,
+// the solution's and the reference's images, the difference heat map, the figures and the cause;
+// it loads in headless Chromium without console errors, and its screenshot is not blank.
+TEST(ExerciseCli, ReportPagesShowEveryViewAndOpenInChromium) {
+  std::string why;
+  ASSERT_TRUE(rtlab::test::chromiumAvailable(why)) << why;
+  const fs::path dir = freshTestDir("exercise");
+  const fs::path folder = newFolder("pcss", dir);
+  const fs::path report = dir / "report";
+  const Grade g = grade(folder, {"--views", firstViews("pcss", 3, dir).string(), "--report", report.string()});
+  ASSERT_EQ(g.process.exitCode, 0) << describe(g);
+  const std::string index = slurp(report / "index.html");
+  for (const auto& v : g.result["views"]) {
+    const std::string name = v["name"].get<std::string>();
+    const fs::path page = report / ("view-" + name + ".html");
+    EXPECT_NE(index.find("href=\"view-" + name + ".html\""), std::string::npos) << name;
+    const std::string html = slurp(page);
+    for (const char* caption : {"student", "solution", "reference (ground truth)", "|student - solution|", "RMSE vs solution",
+                                "RMSE vs reference (solution)"})
+      EXPECT_NE(html.find(caption), std::string::npos) << name << ": " << caption;
+    EXPECT_NE(html.find("stub: the output is the stub"), std::string::npos) << name;
+    std::size_t images = 0;
+    for (auto at = html.find("data:image/png;base64,"); at != std::string::npos; at = html.find("data:image/png;base64,", at + 1)) ++images;
+    EXPECT_EQ(images, 4u) << name;
+  }
+  const auto dom = rtlab::test::runChromium(report / "index.html", dir / "profile");
+  ASSERT_EQ(dom.exitCode, 0) << dom.err;
+  EXPECT_NE(dom.out.find("Score <b>0</b>"), std::string::npos) << dom.out.substr(0, 2000);
+  EXPECT_TRUE(rtlab::test::consoleMessages(dom.err).empty()) << dom.err;
+  const fs::path first = report / ("view-" + g.result["views"][0]["name"].get<std::string>() + ".html");
+  const auto shot = rtlab::test::runChromium(first, dir / "profile2", dir / "view.png");
+  ASSERT_EQ(shot.exitCode, 0) << shot.err;
+  rtlab::test::expectNotBlank(rtlab::readImage((dir / "view.png").string()));
 }

@@ -125,3 +125,48 @@ TEST(ViewReload, TechniqueWithABrokenShaderReportsItAndKeepsTheLastPicture) {
   EXPECT_LT(regionDiff(rtlab::readImage(file("broken.png")), rtlab::readImage(file("before.png")), 0.5, 1.0),
             0.5 / 255.0);
 }
+
+// `rtlab view --exercise DIR` (docs/exercises.md): the student's files replace the shipped ones and
+// are the ones watched. The untouched folder runs (its stub: everything lit); a syntax error in the
+// student's file is reported as that file:line while the viewer goes on; the solution written into
+// the file then shows the shadows without restarting.
+TEST(ViewReload, ExerciseFolderIsWatchedAndItsErrorsNameTheStudentsFile) {
+  ASSERT_TRUE(fs::exists(kXvfbRun)) << "install xvfb (scripts/setup.sh --test-deps)";
+  const fs::path dir = freshTestDir("view");
+  const fs::path folder = dir / "student";
+  ASSERT_EQ(runProcess(RTLAB_BINARY, {"exercise", "new", "shadow_map", "--out", folder.string()}).exitCode, 0);
+  const std::string rel = "shaders/shadow/common/shadow_space.glsl";
+  const fs::path shader = folder / rel;
+  const std::string stub = readText(shader);
+  auto file = [&](const char* name) { return (dir / name).string(); };
+  const int phaseFrames = 80;
+  const nlohmann::json script = {{{"action", "wait"}, {"frames", 3}},
+                                 {{"action", "report"}, {"file", file("before.json")}},
+                                 {{"action", "screenshot"}, {"file", file("before.png")}},
+                                 {{"action", "wait"}, {"frames", phaseFrames}},
+                                 {{"action", "report"}, {"file", file("broken.json")}},
+                                 {{"action", "wait"}, {"frames", phaseFrames}},
+                                 {{"action", "report"}, {"file", file("after.json")}},
+                                 {{"action", "screenshot"}, {"file", file("after.png")}},
+                                 {{"action", "quit"}}};
+  std::vector<std::string> args = kViewSize;
+  args.insert(args.end(), {"--exercise", folder.string(), "--script", writeScript(dir / "script.json", script)});
+  ProcessResult result;
+  std::thread viewer([&] { result = runView(args); });
+  const bool started = waitFor(dir / "before.json", 60);
+  breakLine3(shader, stub);
+  const bool broke = waitFor(dir / "broken.json", 60);
+  fs::copy_file(fs::path(RTLAB_SOURCE_DIR) / rel, shader, fs::copy_options::overwrite_existing);
+  viewer.join();
+  ASSERT_TRUE(started && broke) << result.err;
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto before = readJson(dir / "before.json"), broken = readJson(dir / "broken.json"),
+             after = readJson(dir / "after.json");
+  EXPECT_TRUE(before["shader_errors"].empty()) << before["shader_errors"].dump();
+  ASSERT_FALSE(broken["shader_errors"].empty()) << "the student's broken file was not reported";
+  const std::string message = broken["shader_errors"][0];
+  EXPECT_NE(message.find(shader.string() + ":3"), std::string::npos) << message;
+  EXPECT_TRUE(after["shader_errors"].empty()) << after["shader_errors"].dump();
+  // With the solution in place the shadows appear: the picture right of the panel changed.
+  EXPECT_GT(regionDiff(rtlab::readImage(file("after.png")), rtlab::readImage(file("before.png")), 0.5, 1.0), 1.0 / 255.0);
+}
