@@ -76,6 +76,7 @@ GradeResult gradeExercise(const ExerciseFolder& folder, const GradeOptions& opti
       g.cause = c.cause;
       g.rmseVsSolution = c.rmseVsSolution;
       g.differingFraction = c.differingFraction;
+      g.rmseAgreeing = c.rmseAgreeing;
       g.rmseVsReference = rmse(s.image, solution[i].reference);
     } else {
       g.status = runStatusName(s.status);

@@ -29,6 +29,7 @@ struct ViewGrade {
   std::string cause;        // empty when passed
   bool passed = false;
   std::optional<double> rmseVsSolution, differingFraction, rmseVsReference;
+  std::optional<double> rmseAgreeing; // over the pixels that do not differ (the bound's figure)
   double solutionRmseVsReference = 0.0;
   double ms = 0.0;          // the student's render of the view (wall time, including compiling on the first)
   std::string message;      // compile error (file:line) or what ended the process

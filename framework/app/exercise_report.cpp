@@ -69,9 +69,10 @@ std::string viewPage(const ExerciseFolder& folder, const GradeOptions& options, 
   body += "</div>";
   const ExerciseTolerance& t = options.tolerance;
   body += html::table({"figure", "value", "bound"},
-                      {{"RMSE vs solution", value(g.rmseVsSolution), "<= " + formatNumber(t.rmse)},
+                      {{"RMSE vs solution", value(g.rmseVsSolution), "all pixels"},
                        {"differing fraction (|d| > " + formatNumber(t.pixel) + ")", value(g.differingFraction),
                         "<= " + formatNumber(t.fraction)},
+                       {"RMSE vs solution of the other pixels", value(g.rmseAgreeing), "<= " + formatNumber(t.rmse)},
                        {"RMSE vs reference (student)", value(g.rmseVsReference), "informative"},
                        {"RMSE vs reference (solution)", value(g.solutionRmseVsReference), "informative"},
                        {"time (student's render)", html::formatMs(g.ms) + " ms", "<= " + formatNumber(options.timeLimitSeconds) + " s"}});
@@ -109,7 +110,7 @@ void writeGradeReport(const std::string& dir, const ExerciseFolder& folder, cons
                            "solution vs reference", "time", "cause"}, rows);
   body += "<p>A view passes when at most " + formatNumber(options.tolerance.fraction * 100.0) +
           "% of its pixels differ from the solution by more than " + formatNumber(options.tolerance.pixel) +
-          " and the RMSE is at most " + formatNumber(options.tolerance.rmse) + " (docs/exercises.md).</p>";
+          " and the RMSE of the other pixels is at most " + formatNumber(options.tolerance.rmse) + " (docs/exercises.md).</p>";
   writeTextAtomically((fs::path(dir) / "grade.json").string(), gradeJson(result).dump(2) + "\n");
   writeTextAtomically((fs::path(dir) / "index.html").string(), html::page("grade: " + folder.def->id, body, kCss));
 }

@@ -78,8 +78,9 @@ std::string assignmentMarkdown(const ExerciseDef& def, const std::vector<ParamSp
   md << "`rtlab exercise grade` renders the `" << def.aov << "` AOV of " << def.views.size() << " views with your files and with rtlab's\n"
      << "solution on the same machine, and compares them. A pixel differs when your value and the solution's\n"
      << "differ by more than " << formatNumber(def.tolerance.pixel) << "; a view passes when at most "
-     << formatNumber(def.tolerance.fraction * 100.0) << "% of its pixels differ and the RMSE over\n"
-     << "the pixels with geometry is at most " << formatNumber(def.tolerance.rmse) << ". Your score is the percentage of views that pass.\n"
+     << formatNumber(def.tolerance.fraction * 100.0) << "% of its pixels (with geometry) differ and the other pixels\n"
+     << "are within an RMSE of " << formatNumber(def.tolerance.rmse) << " (no small error everywhere). Your score is the percentage of\n"
+     << "views that pass.\n"
      << "Each view also reports your error against the ground-truth reference next to the solution's.\n"
      << "A view that runs longer than " << formatNumber(def.timeLimitSeconds) << " s fails (`timeout`).\n\n";
   md << "The views you can see (" << hidden << " more are hidden: other scenes and extreme settings):\n\n";

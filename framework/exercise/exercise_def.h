@@ -23,7 +23,9 @@ struct ExerciseView {
 };
 
 // A pixel differs when |student - solution| > pixel in any channel; a view passes when at most
-// `fraction` of the valid pixels differ and the RMSE over valid pixels is at most `rmse`.
+// `fraction` of the valid pixels differ and the RMSE over the other valid pixels (those that do not
+// differ) is at most `rmse`: the fraction bounds a few flipped pixels at shadow edges, the RMSE a
+// small error everywhere (docs/exercises.md "Tolerances").
 struct ExerciseTolerance {
   double pixel = 0.02;
   double fraction = 0.005;

@@ -14,7 +14,8 @@ namespace {
 bool valid(const Image& solution, std::size_t pixel) { return !solution.hasMask() || solution.mask[pixel] > 0.5f; }
 
 struct Difference {
-  double rmse = 0.0;
+  double rmse = 0.0;          // over the valid finite pixels
+  double rmseAgreeing = 0.0;  // over the valid finite pixels within the per-pixel tolerance
   double fraction = 0.0;
   double meanSigned = 0.0;
   std::size_t darker = 0, brighter = 0; // differing pixels below / above the other image
@@ -25,8 +26,8 @@ struct Difference {
 // a against b over b's valid pixels; `invertA` compares 1 - a instead (an inverted result).
 Difference difference(const Image& a, const Image& b, double pixelTolerance, bool invertA = false) {
   Difference d;
-  double sumSq = 0.0, sumSigned = 0.0;
-  std::size_t finite = 0, differing = 0;
+  double sumSq = 0.0, sumSigned = 0.0, sumSqAgreeing = 0.0;
+  std::size_t finite = 0, differing = 0, agreeing = 0;
   const int c = b.channels;
   for (std::size_t p = 0; p < b.pixelCount(); ++p) {
     if (!valid(b, p)) continue;
@@ -58,11 +59,16 @@ Difference difference(const Image& a, const Image& b, double pixelTolerance, boo
     sumSq += pixelSq / c;
     sumSigned += pixelSigned / c;
     differing += differs ? 1 : 0;
+    if (!differs) {
+      ++agreeing;
+      sumSqAgreeing += pixelSq / c;
+    }
     d.darker += worst < 0.0 ? 1 : 0;
     d.brighter += worst > 0.0 ? 1 : 0;
   }
   if (finite > 0) {
     d.rmse = std::sqrt(sumSq / double(finite));
+    if (agreeing > 0) d.rmseAgreeing = std::sqrt(sumSqAgreeing / double(agreeing));
     d.meanSigned = sumSigned / double(finite);
   }
   if (d.validPixels > 0) d.fraction = double(differing) / double(d.validPixels);
@@ -70,7 +76,7 @@ Difference difference(const Image& a, const Image& b, double pixelTolerance, boo
 }
 
 bool withinTolerance(const Difference& d, const ExerciseTolerance& t) {
-  return d.nonFinite == 0 && d.fraction <= t.fraction && d.rmse <= t.rmse;
+  return d.nonFinite == 0 && d.fraction <= t.fraction && d.rmseAgreeing <= t.rmse;
 }
 
 // True when every valid, finite pixel of `image` holds the same value (within 1e-6).
@@ -127,6 +133,7 @@ ViewComparison compareWithSolution(const Image& student, const Image& solution, 
   const Difference d = difference(student, solution, tolerance.pixel);
   ViewComparison out;
   out.rmseVsSolution = d.rmse;
+  out.rmseAgreeing = d.rmseAgreeing;
   out.differingFraction = d.fraction;
   out.nonFinite = d.nonFinite;
   out.meanSignedDifference = d.meanSigned;
@@ -164,8 +171,10 @@ ViewComparison compareWithSolution(const Image& student, const Image& solution, 
     return out;
   }
   std::string what = percent(d.fraction) + " of the pixels differ by more than " + formatNumber(tolerance.pixel) +
-                     " (allowed " + percent(tolerance.fraction) + "), RMSE " + short3(d.rmse) + " (allowed " +
-                     formatNumber(tolerance.rmse) + ")";
+                     " (allowed " + percent(tolerance.fraction) + "), RMSE " + short3(d.rmse);
+  if (d.rmseAgreeing > tolerance.rmse)
+    what += "; the other pixels are off by RMSE " + short3(d.rmseAgreeing) + " (allowed " + formatNumber(tolerance.rmse) +
+            "): a small error everywhere";
   // The direction when at least 80% of the differing pixels agree on it.
   const double differing = double(d.darker + d.brighter);
   if (differing > 0 && std::max(d.darker, d.brighter) >= 0.8 * differing)

@@ -13,6 +13,7 @@ namespace rtlab {
 struct ViewComparison {
   bool passed = false;
   double rmseVsSolution = 0.0;      // over valid pixels where both are finite
+  double rmseAgreeing = 0.0;        // the same over the pixels that do not differ (the small-error bound)
   double differingFraction = 0.0;   // of valid pixels: differ by more than the pixel tolerance, or not finite
   std::size_t nonFinite = 0;        // valid pixels where the student's value is NaN or Inf
   double meanSignedDifference = 0.0; // student - solution, over valid finite pixels

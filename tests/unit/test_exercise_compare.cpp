@@ -46,12 +46,24 @@ TEST(ExerciseCompare, IdenticalAndWithinTolerancePass) {
   const auto c = compareWithSolution(near, sol, nullptr, kTol);
   EXPECT_TRUE(c.passed) << c.cause;
   EXPECT_DOUBLE_EQ(c.differingFraction, 0.0);
-  // One differing pixel of 190 valid ones is within a 1% fraction but its RMSE must be small too.
+  // One flipped pixel of 190 valid ones (0.53%) is within a 1% fraction, however far it is off
+  // (RMSE sqrt(0.64/190) = 0.058): the fraction bounds outliers, not the RMSE.
   Image one = sol;
-  one.at(5, 5, 0) = 0.3f;
-  EXPECT_TRUE(compareWithSolution(one, sol, nullptr, kTol).passed);
-  one.at(5, 5, 0) = 1.0f; // RMSE sqrt(0.64/190) = 0.058 > 0.01
+  one.at(5, 5, 0) = 1.0f;
+  const auto flipped = compareWithSolution(one, sol, nullptr, kTol);
+  EXPECT_TRUE(flipped.passed) << flipped.cause;
+  EXPECT_NEAR(flipped.rmseVsSolution, std::sqrt(0.64 / 190.0), 1e-6);
+  EXPECT_DOUBLE_EQ(flipped.rmseAgreeing, 0.0);
+  // Two flipped pixels exceed the fraction.
+  one.at(6, 5, 0) = 1.0f;
   EXPECT_FALSE(compareWithSolution(one, sol, nullptr, kTol).passed);
+  // A small error everywhere, under the per-pixel tolerance but over the RMSE bound, fails.
+  Image biased = sol;
+  for (auto& p : biased.pixels) p -= 0.015f;
+  const auto b = compareWithSolution(biased, sol, nullptr, kTol);
+  EXPECT_FALSE(b.passed);
+  EXPECT_DOUBLE_EQ(b.differingFraction, 0.0);
+  EXPECT_NE(b.cause.find("a small error everywhere"), std::string::npos) << b.cause;
 }
 
 TEST(ExerciseCompare, BackgroundPixelsAreIgnored) {
