@@ -72,6 +72,7 @@ TEST(Layout, FrameworkLayersIncludeOnlyLayersBelow) {
       {"framework/frame", {"shading/", "render/", "techniques/", "app/"}},
       {"framework/shading", {"render/", "techniques/", "app/"}},
       {"framework/render", {"techniques/", "app/"}},
+      {"framework/exercise", {"gl/", "frame/", "shading/", "render/", "techniques/", "app/"}},
   };
   for (const auto& rule : rules) {
     ASSERT_TRUE(fs::is_directory(kRoot / rule.folder)) << rule.folder;
