@@ -386,3 +386,52 @@ TEST(ExerciseCli, ReportPagesShowEveryViewAndOpenInChromium) {
   ASSERT_EQ(shot.exitCode, 0) << shot.err;
   rtlab::test::expectNotBlank(rtlab::readImage((dir / "view.png").string()));
 }
+
+// Usage errors of `rtlab exercise` (docs/cli.md "rtlab exercise"): each one line, the documented code.
+TEST(ExerciseCli, BadArgumentsAreOneLineErrorsWithTheDocumentedCode) {
+  const fs::path dir = freshTestDir("exercise");
+  const fs::path folder = newFolder("shadow_map", dir);
+  writeText(dir / "bad.json", "{\"schema\": 1, \"views\": [{\"name\": \"x\"}]}");
+  writeText(dir / "unknown_key.json", "{\"schema\": 1, \"views\": [{\"name\": \"x\", \"scene\": \"contact\", \"set\": {\"shadow.nope\": \"1\"}}]}");
+  writeText(dir / "out_of_range.json", "{\"schema\": 1, \"views\": [{\"name\": \"y\", \"scene\": \"contact\", \"set\": {\"shadow.resolution\": \"1\"}}]}");
+  const std::vector<std::pair<std::vector<std::string>, int>> cases = {
+      {{"exercise"}, 2},
+      {{"exercise", "frobnicate"}, 2},
+      {{"exercise", "new", "pcss"}, 2},
+      {{"exercise", "grade"}, 2},
+      {{"exercise", "grade", folder.string(), "--time-limit", "0"}, 2},
+      {{"exercise", "grade", folder.string(), "--time-limit", "abc"}, 2},
+      {{"exercise", "grade", folder.string(), "--backend", "vulkan"}, 2},
+      {{"exercise", "grade", folder.string(), "--views", (dir / "missing.json").string()}, 3},
+      {{"exercise", "grade", folder.string(), "--views", (dir / "bad.json").string()}, 3},
+      {{"exercise", "grade", folder.string(), "--views", (dir / "unknown_key.json").string()}, 2},
+      {{"exercise", "grade", folder.string(), "--views", (dir / "out_of_range.json").string()}, 2},
+      {{"exercise", "grade", folder.string(), "--report", (dir / "bad.json").string()}, 6},
+  };
+  for (const auto& [args, code] : cases) {
+    const auto r = runProcess(RTLAB_BINARY, args);
+    std::string joined;
+    for (const auto& a : args) joined += a + " ";
+    EXPECT_EQ(r.exitCode, code) << joined << ": " << r.err;
+    EXPECT_EQ(rtlab::test::lineCount(r.err), 1) << joined << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("rtlab: error: ", 0), 0u) << r.err;
+  }
+  // A bad view is named.
+  const auto r = runProcess(RTLAB_BINARY, {"exercise", "grade", folder.string(), "--views", (dir / "unknown_key.json").string()});
+  EXPECT_NE(r.err.find("view 'x'"), std::string::npos) << r.err;
+}
+
+// A course author's views file with its own tolerance: a tolerance of 1 everywhere passes even the
+// untouched stub, so the file's tolerance is the one applied.
+TEST(ExerciseCli, ViewsFileToleranceReplacesTheExercises) {
+  const fs::path dir = freshTestDir("exercise");
+  const fs::path folder = newFolder("pcf", dir);
+  json views = json::parse(slurp(firstViews("pcf", 2, dir)));
+  views["tolerance"] = {{"pixel", 1.0}, {"fraction", 1.0}, {"rmse", 1.0}};
+  writeText(dir / "lenient.json", views.dump());
+  const Grade lenient = grade(folder, {"--views", (dir / "lenient.json").string()});
+  ASSERT_EQ(lenient.process.exitCode, 0) << describe(lenient);
+  EXPECT_EQ(lenient.result["score"], 100) << describe(lenient);
+  const Grade strict = grade(folder, {"--views", firstViews("pcf", 2, dir).string()});
+  EXPECT_EQ(strict.result["score"], 0) << describe(strict);
+}
