@@ -1,11 +1,11 @@
 #include "app/exercise_runner.h"
 
+#include "app/child_process.h"
 #include "util/error.h"
 
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -51,27 +51,15 @@ Worker startWorker(const std::string& request) {
   int in[2], out[2], err[2];
   if (::pipe2(in, O_CLOEXEC) != 0 || ::pipe2(out, O_CLOEXEC) != 0 || ::pipe2(err, O_CLOEXEC) != 0)
     throw Error(ExitCode::Internal, std::string("cannot start a grading worker: pipe: ") + std::strerror(errno));
-  // Everything the child needs is prepared before fork: between fork and exec it only calls
-  // async-signal-safe functions.
-  std::vector<std::string> argStrings = {"rtlab", "exercise", "worker"};
-  std::vector<char*> argv;
-  for (auto& a : argStrings) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  std::vector<std::string> envStrings = workerEnvironment();
-  std::vector<char*> envp;
-  for (auto& e : envStrings) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  const pid_t parent = ::getpid();
-  const pid_t pid = ::fork();
-  if (pid < 0) throw Error(ExitCode::Internal, std::string("cannot start a grading worker: fork: ") + std::strerror(errno));
-  if (pid == 0) {
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL); // a killed grader takes its worker with it
-    if (::getppid() != parent) ::_exit(130);
-    ::dup2(in[0], 0);
-    ::dup2(out[1], 1);
-    ::dup2(err[1], 2);
-    ::execve("/proc/self/exe", argv.data(), envp.data());
-    ::_exit(127);
+  const std::vector<std::string> env = workerEnvironment();
+  // A killed grader takes its worker with it.
+  const ChildSpec spec{{"rtlab", "exercise", "worker"}, in[0], out[1], err[1], SIGKILL, &env, "a grading worker"};
+  pid_t pid = -1;
+  try {
+    pid = spawnSelf(spec);
+  } catch (...) {
+    for (int fd : {in[0], in[1], out[0], out[1], err[0], err[1]}) ::close(fd);
+    throw;
   }
   ::close(in[0]);
   ::close(out[1]);

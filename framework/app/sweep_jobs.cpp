@@ -1,5 +1,6 @@
 #include "app/sweep_jobs.h"
 
+#include "app/child_process.h"
 #include "app/measure.h"
 #include "app/reference_run.h"
 #include "app/run_info.h"
@@ -13,7 +14,6 @@
 #include "util/log.h"
 
 #include <fcntl.h>
-#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -126,28 +126,19 @@ private:
 };
 
 pid_t spawn(const Job& job) {
-  // Everything the child needs is prepared before fork: between fork and exec it only calls
-  // async-signal-safe functions.
-  std::vector<char*> argv;
-  for (const auto& a : job.argv) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  const char* log = job.log.c_str();
-  const pid_t parent = ::getpid();
-  const pid_t pid = ::fork();
-  if (pid < 0) throw Error(ExitCode::Internal, std::string("cannot start a sweep job: fork: ") + std::strerror(errno));
-  if (pid == 0) {
-    ::prctl(PR_SET_PDEATHSIG, SIGTERM); // a killed sweep takes its jobs with it
-    if (::getppid() != parent) ::_exit(130);
-    const int fd = ::open(log, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd >= 0) {
-      ::dup2(fd, 1);
-      ::dup2(fd, 2);
-    }
-    const int in = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
-    if (in >= 0) ::dup2(in, 0);
-    ::execv("/proc/self/exe", argv.data());
-    ::_exit(127);
+  const int log = ::open(job.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  const int in = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+  ChildSpec spec{job.argv, in, log, log, SIGTERM, nullptr, "a sweep job"}; // a killed sweep takes its jobs with it
+  pid_t pid = -1;
+  try {
+    pid = spawnSelf(spec);
+  } catch (...) {
+    if (log >= 0) ::close(log);
+    if (in >= 0) ::close(in);
+    throw;
   }
+  if (log >= 0) ::close(log);
+  if (in >= 0) ::close(in);
   return pid;
 }
 
