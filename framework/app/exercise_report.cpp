@@ -48,6 +48,15 @@ std::string statusSpan(const std::string& status) {
   return "<span class=\"" + html::escape(status) + "\">" + html::escape(status) + "</span>";
 }
 
+// How the student's error against the ground truth compares with the solution's (informative).
+std::string againstReference(const ViewGrade& g) {
+  const double s = *g.rmseVsReference, r = g.solutionRmseVsReference;
+  const std::string figures = "RMSE against the reference " + value(s) + ", the solution's " + value(r);
+  if (s < r * 0.98) return figures + ": closer to the ground truth than the solution.";
+  if (s <= r * 1.02) return figures + ": as close to the ground truth as the solution.";
+  return figures + ": farther from the ground truth than the solution.";
+}
+
 std::string pageFile(const ViewGrade& v) { return "view-" + v.name + ".html"; }
 
 std::string viewPage(const ExerciseFolder& folder, const GradeOptions& options, const ExerciseView& view,
@@ -59,6 +68,7 @@ std::string viewPage(const ExerciseFolder& folder, const GradeOptions& options, 
   for (const auto& [key, val] : view.set) setting += ", " + key + "=" + val;
   body += "<p>" + html::escape(setting) + (view.note.empty() ? "" : " — " + html::escape(view.note)) + "</p>";
   if (!g.cause.empty()) body += "<p class=\"cause\">" + html::escape(g.cause) + "</p>";
+  if (g.rmseVsReference) body += "<p>" + html::escape(againstReference(g)) + "</p>";
   body += "<div class=\"grid\">";
   body += g.hasStudent ? figure(g.student, "student") : missing("student", g.status);
   body += figure(g.solution, "solution");
