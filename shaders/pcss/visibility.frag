@@ -82,10 +82,11 @@ void main() {
   // task: Blocker search (Fernando 2005), only when the receiver is inside the map (`inside`).
   // task: For each of the uSearchTapCount taps uSearchTaps[i] (points of the unit disk), read the
   // task: raw stored depth d = storedDepth(coord, rotation * uSearchTaps[i] * searchTexels) (offset
-  // task: in map texels). A tap with d < zRef (zRef: the receiver's map depth minus the constant
-  // task: bias) is a blocker: add its linear depth shadowLinearDepth(d) to blockerSum and count it
-  // task: in blockers. The code below turns them into the mean blocker depth
-  // task: zB = blockerSum / blockers; no blocker means lit.
+  // task: in map texels; rotation, searchTexels and zRef are computed above, and rotation is the
+  // task: identity when pcss.rotate is off). A tap with d < zRef (zRef: the receiver's map depth
+  // task: minus the constant bias) is a blocker: add its linear depth shadowLinearDepth(d) (scene
+  // task: units from the light) to blockerSum and count it in blockers. The code below turns them
+  // task: into the mean blocker depth zB = blockerSum / blockers; no blocker means lit.
   if (inside) {
     for (int i = 0; i < uSearchTapCount; ++i) {
       float d = storedDepth(coord, rotation * uSearchTaps[i] * searchTexels);

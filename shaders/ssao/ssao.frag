@@ -48,7 +48,8 @@ float aoEvaluate(ivec2 px, AoSurface s) {
   // exercise(ssao-kernel-test): begin
   // task: The kernel test. Inputs: the surface point s.p (view space: the camera sits at the origin
   // task: and looks down -z), its linear depth s.depth, the tangent frame `frame` (columns: two
-  // task: tangents and the normal, turned by the per-pixel angle) and `jitter`.
+  // task: tangents and the normal, turned by the per-pixel angle) and `jitter`; uRadius = ao.radius
+  // task: and uBias = ssao.bias are in scene units.
   // task: For each i < uSampleCount:
   // task: 1. the sample q = s.p + uRadius * (frame * kernelPoint(i, uSampleCount, jitter));
   // task: 2. project it: aoProject(q, uv, tap) (out vec2 uv, out ivec2 tap) returns false behind

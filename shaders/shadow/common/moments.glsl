@@ -79,8 +79,9 @@ float hamburger4Msm(vec4 moments, float t, float momentBias) {
   // task: 1. Bias: b = mix(moments, vec4(0.5), momentBias) keeps the Hankel matrix invertible.
   // task: 2. Solve B c = (1, t, t^2) with B = [[1, b1, b2], [b1, b2, b3], [b2, b3, b4]], by its
   // task:    Cholesky factorization B = L D L^T: d22 = b2 - b1^2, l32 = (b3 - b1 b2) / d22,
-  // task:    d33 = b4 - b2^2 - l32 (b3 - b1 b2); then forward substitution, division by D and
-  // task:    back substitution.
+  // task:    d33 = b4 - b2^2 - l32 (b3 - b1 b2), L = [[1, 0, 0], [b1, 1, 0], [b2, l32, 1]],
+  // task:    D = diag(1, d22, d33); then forward substitution (L y = (1, t, t^2)), division by D
+  // task:    and back substitution (L^T c = D^-1 y).
   // task:    Use these steps, not inverse(B): B is nearly singular, and a general 3x3 inverse in
   // task:    32-bit floats loses the digits the bound needs (measured: it fails 3 of 5 test views).
   // task: 3. The roots z2 <= z3 of c1 + c2 z + c3 z^2: with p = c2 / c3, q = c1 / c3,

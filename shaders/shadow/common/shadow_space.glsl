@@ -45,9 +45,10 @@ bool shadowFacesAway(vec3 p, vec3 n) {
 vec3 shadowReceiver(vec3 p, vec3 geometricNormal) {
   // exercise(shadow_map-normal_offset): begin
   // task: Normal offset. Return the receiver q = p + n * (b * w): the surface point p moved along
-  // task: its unit geometric normal n (geometricNormal) by b = uNormalBias map texels, where
-  // task: w = shadowTexelWorld(p) is the world size of one map texel at p. The offset grows with
-  // task: the texel, so it removes the acne that the texel's depth slope causes.
+  // task: its unit geometric normal n (geometricNormal) by b = uNormalBias map texels
+  // task: (shadow.normal_bias), where w = shadowTexelWorld(p) is the world size (scene units) of
+  // task: one map texel at p. The offset grows with the texel, so it removes the acne that the
+  // task: texel's depth slope causes.
   return p + geometricNormal * (uNormalBias * shadowTexelWorld(p));
   // exercise: stub
   // return p; // no offset: the receiver is the surface point itself
@@ -92,10 +93,10 @@ float shadowTestHard(vec3 q) {
   // task: Depth comparison. Project q into the map with shadowCoord2D(q, coord) (coord.xy: map
   // task: uv, coord.z: q's map depth, both in [0,1]); when it returns false, q is outside the
   // task: light's frustum: return 1.0 (lit). Otherwise return 1.0 when the biased receiver depth
-  // task: coord.z - uConstantBias is <= the depth stored at coord.xy, else 0.0. uShadowMap is a
-  // task: sampler2DShadow (compare mode GL_LEQUAL, nearest texel): texture(uShadowMap,
-  // task: vec3(uv, reference)) returns exactly that 0/1 comparison of reference with the stored
-  // task: depth.
+  // task: coord.z - uConstantBias (shadow.constant_bias, in the map's [0,1] depth units) is <= the
+  // task: depth stored at coord.xy, else 0.0. uShadowMap is a sampler2DShadow (compare mode
+  // task: GL_LEQUAL, nearest texel): texture(uShadowMap, vec3(uv, reference)) returns exactly that
+  // task: 0/1 comparison of reference with the stored depth.
   vec3 coord;
   if (!shadowCoord2D(q, coord)) return 1.0;
   return texture(uShadowMap, vec3(coord.xy, coord.z - uConstantBias));
