@@ -4,7 +4,11 @@
 #include "frame/registry.h"
 #include "frame/selection.h"
 #include "frame/stages.h"
+#include "frame/param_catalog.h"
 #include "gl/shader_overlay.h"
+#include "scene/load.h"
+
+#include <algorithm>
 
 namespace rtlab {
 
@@ -29,9 +33,21 @@ bool applyExerciseOption(const Args& args, ResolvedFrame& frame) {
 }
 
 std::vector<ParamSpec> exerciseParams(const ExerciseDef& def) {
-  const TechniqueEntry& entry = TechniqueRegistry::instance().get(def.technique);
+  const TechniqueRegistry& registry = TechniqueRegistry::instance();
+  const TechniqueEntry& entry = registry.get(def.technique);
   std::vector<ParamSpec> out = entry.info.params;
   if (const StageInfo* stage = findStage(entry.info.stage)) out.insert(out.end(), stage->params.begin(), stage->params.end());
+  // And every other key a view sets (a light's radius, another technique's key), as that view's
+  // scene declares it.
+  auto listed = [&](const std::string& key) {
+    return std::any_of(out.begin(), out.end(), [&](const ParamSpec& p) { return p.key == key; });
+  };
+  for (const auto& view : def.views) {
+    if (view.set.empty()) continue;
+    const ParamSet params = makeParamSet(loadScene(view.scene), registry);
+    for (const auto& [key, value] : view.set)
+      if (!listed(key) && params.has(key)) out.push_back(params.spec(key));
+  }
   return out;
 }
 

@@ -22,10 +22,26 @@ std::string range(const ParamSpec& p) {
   return formatParamValue(p, ParamValue::scalar(p.min)) + " .. " + formatParamValue(p, ParamValue::scalar(p.max));
 }
 
+// Markdown paragraph wrapped at 100 columns, for reading in a terminal.
+std::string wrapped(const std::string& paragraph) {
+  std::istringstream words(paragraph);
+  std::string word, out, line;
+  while (words >> word) {
+    if (!line.empty() && line.size() + 1 + word.size() > 100) {
+      out += line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  return out + line;
+}
+
 std::string viewCommand(const ExerciseDef& def, const ExerciseView& v, const char* command) {
   std::ostringstream s;
   s << "rtlab " << command << " --exercise . --scene " << v.scene;
-  for (const auto& t : v.techniques.empty() ? std::vector<std::string>{def.technique} : v.techniques) s << " -t " << t;
+  // --exercise activates the exercise's technique; other techniques are named.
+  if (!v.techniques.empty() && v.techniques != std::vector<std::string>{def.technique})
+    for (const auto& t : v.techniques) s << " -t " << t;
   for (const auto& [key, value] : v.set) s << " --set " << key << "=" << value;
   return s.str();
 }
@@ -37,7 +53,7 @@ std::string assignmentMarkdown(const ExerciseDef& def, const std::vector<ParamSp
   md << "# Exercise `" << def.id << "`: " << def.title << "\n\n";
   md << "Technique: `" << def.technique << "`. This folder holds your copy of the files below; rtlab runs them\n"
         "in place of its own when you pass `--exercise` with this folder.\n\n";
-  for (const auto& p : def.background) md << p << "\n\n";
+  for (const auto& p : def.background) md << (p.find('\n') == std::string::npos ? wrapped(p) : p) << "\n\n";
 
   md << "## What to implement\n\n";
   md << "Each part is a region between `// exercise(NAME): begin` and `// exercise: end`. It holds a stub that\n"
@@ -75,15 +91,19 @@ std::string assignmentMarkdown(const ExerciseDef& def, const std::vector<ParamSp
   md << "## How it is graded\n\n";
   int hidden = 0;
   for (const auto& v : def.views) hidden += v.hidden ? 1 : 0;
-  md << "`rtlab exercise grade` renders the `" << def.aov << "` AOV of " << def.views.size() << " views with your files and with rtlab's\n"
-     << "solution on the same machine, and compares them. A pixel differs when your value and the solution's\n"
-     << "differ by more than " << formatNumber(def.tolerance.pixel) << "; a view passes when at most "
-     << formatNumber(def.tolerance.fraction * 100.0) << "% of its pixels (with geometry) differ and the other pixels\n"
-     << "are within an RMSE of " << formatNumber(def.tolerance.rmse) << " (no small error everywhere). Your score is the percentage of\n"
-     << "views that pass.\n"
-     << "Each view also reports your error against the ground-truth reference next to the solution's.\n"
-     << "A view that runs longer than " << formatNumber(def.timeLimitSeconds) << " s fails (`timeout`).\n\n";
-  md << "The views you can see (" << hidden << " more are hidden: other scenes and extreme settings):\n\n";
+  std::ostringstream grading;
+  grading << "`rtlab exercise grade` renders the `" << def.aov << "` AOV of " << def.views.size()
+          << " views with your files and with rtlab's solution on the same machine, and compares them. A pixel differs "
+             "when your value and the solution's differ by more than "
+          << formatNumber(def.tolerance.pixel) << "; a view passes when at most " << formatNumber(def.tolerance.fraction * 100.0)
+          << "% of its pixels (with geometry) differ and the other pixels are within an RMSE of "
+          << formatNumber(def.tolerance.rmse) << " (no small error everywhere). Your score is the percentage of views "
+             "that pass. Each view also reports your error against the ground-truth reference next to the solution's. "
+             "A view that runs longer than "
+          << formatNumber(def.timeLimitSeconds) << " s fails (`timeout`).";
+  md << wrapped(grading.str()) << "\n\n";
+  md << "The views you can see (" << hidden << (hidden == 1 ? " more is" : " more are")
+     << " hidden, with other settings):\n\n";
   md << "| view | what it tests | command |\n|---|---|---|\n";
   for (const auto& v : def.views)
     if (!v.hidden)
