@@ -3,6 +3,7 @@
 #include "exercise/regions.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/number_format.h"
 #include "util/paths.h"
 #include "util/suggest.h"
 
@@ -56,8 +57,7 @@ ExerciseTolerance parseTolerance(const json& j, const std::string& source) {
     if (!j[key].is_number()) bad(source, std::string("tolerance \"") + key + "\" must be a number");
     out = j[key].get<double>();
     if (!(out >= lo && out <= hi))
-      bad(source, std::string("tolerance \"") + key + "\" must be in [" + std::to_string(lo).substr(0, 3) + ", " +
-                      std::to_string(hi).substr(0, 3) + "]");
+      bad(source, std::string("tolerance \"") + key + "\" must be in [" + formatNumber(lo) + ", " + formatNumber(hi) + "]");
   };
   number("pixel", t.pixel, 0.0, 1.0);
   number("fraction", t.fraction, 0.0, 1.0);
