@@ -132,11 +132,7 @@ int runExerciseGrade(int argc, char** argv) {
   // Every view must be a valid frame with the exercise's AOV before anything renders.
   for (const auto& view : options.views) {
     try {
-      std::vector<std::string> strings = viewFrameArguments(view, def.technique, options.backend);
-      strings.insert(strings.begin(), {"rtlab", "grade"});
-      std::vector<char*> argv2;
-      for (auto& s : strings) argv2.push_back(s.data());
-      const ResolvedFrame frame = resolveFrame(Args("exercise grade", frameOptionSpecs(), int(argv2.size()), argv2.data(), 2));
+      const ResolvedFrame frame = resolveViewFrame(view, def.technique, options.backend);
       checkAovName(def.aov, frame.techniques, TechniqueRegistry::instance());
     } catch (const Error& e) {
       throw Error(e.code(), "view '" + view.name + "': " + e.what());

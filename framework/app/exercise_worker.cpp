@@ -73,9 +73,8 @@ WorkerRequest workerRequestFromJson(const nlohmann::json& j) {
   return r;
 }
 
-std::vector<std::string> viewFrameArguments(const ExerciseView& view, const std::string& technique,
-                                            const std::string& backend) {
-  std::vector<std::string> args = {"--scene", view.scene, "--size", viewSize(view), "--seed", std::to_string(view.seed),
+ResolvedFrame resolveViewFrame(const ExerciseView& view, const std::string& technique, const std::string& backend) {
+  std::vector<std::string> args = {"rtlab", "exercise", "--scene", view.scene, "--size", viewSize(view), "--seed", std::to_string(view.seed),
                                    "--backend", backend};
   for (const auto& t : view.techniques.empty() ? std::vector<std::string>{technique} : view.techniques) {
     args.push_back("-t");
@@ -85,7 +84,9 @@ std::vector<std::string> viewFrameArguments(const ExerciseView& view, const std:
     args.push_back("--set");
     args.push_back(key + "=" + value);
   }
-  return args;
+  std::vector<char*> argv;
+  for (auto& s : args) argv.push_back(s.data());
+  return resolveFrame(Args("exercise", frameOptionSpecs(), int(argv.size()), argv.data(), 2));
 }
 
 int runExerciseWorker() {
@@ -105,12 +106,7 @@ int runExerciseWorker() {
     nlohmann::json header = {{"view", i}};
     const auto start = std::chrono::steady_clock::now();
     try {
-      std::vector<std::string> strings = viewFrameArguments(view, def.technique, request.backend);
-      strings.insert(strings.begin(), {"rtlab", "worker"});
-      std::vector<char*> argv;
-      for (auto& s : strings) argv.push_back(s.data());
-      const Args args("exercise worker", frameOptionSpecs(), int(argv.size()), argv.data(), 2);
-      const ResolvedFrame frame = resolveFrame(args);
+      const ResolvedFrame frame = resolveViewFrame(view, def.technique, request.backend);
       if (!context) context = createHeadlessContext(frame.options.backend);
       const TimingMethod timing = resolveTiming(frame.options.timing, context->info().software);
       if (!renderer) renderer = std::make_unique<Renderer>(registry);

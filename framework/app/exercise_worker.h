@@ -4,6 +4,7 @@
 // each result to stdout: a JSON header line, then the raw floats of the image (and its mask, and
 // for the solution the reference). It writes no file.
 #pragma once
+#include "app/frame_options.h"
 #include "exercise/exercise_def.h"
 #include "image/image.h"
 
@@ -30,9 +31,9 @@ struct WorkerRequest {
 nlohmann::json workerRequestJson(const WorkerRequest& request);
 WorkerRequest workerRequestFromJson(const nlohmann::json& j);
 
-// Arguments for resolveFrame of one view (scene and frame options, as on the command line).
-std::vector<std::string> viewFrameArguments(const ExerciseView& view, const std::string& technique,
-                                            const std::string& backend);
+// One view as a resolved frame: its scene and frame options go through the command line's parser,
+// so a bad key or value is the same Error(Usage) as on the command line.
+ResolvedFrame resolveViewFrame(const ExerciseView& view, const std::string& technique, const std::string& backend);
 
 // The result header of one view: {"view": i, "status": "ok"|"compile_error"|"error", "message",
 // "ms", "image": [w, h, channels, mask], "reference": [w, h, channels, mask] (when sent)}.

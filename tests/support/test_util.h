@@ -56,6 +56,14 @@ inline std::set<std::string> dirEntries(const std::filesystem::path& dir) {
   return names;
 }
 
+// `text` with the first occurrence of `find` replaced (a failed expectation when there is none).
+inline std::string replacedOnce(std::string text, const std::string& find, const std::string& replace) {
+  const auto at = text.find(find);
+  EXPECT_NE(at, std::string::npos) << find;
+  if (at == std::string::npos) return text;
+  return text.replace(at, find.size(), replace);
+}
+
 inline std::string slurp(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

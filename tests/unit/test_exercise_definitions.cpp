@@ -17,10 +17,7 @@ const char* kDef = R"({"schema": 1, "id": "demo", "technique": "pcf", "title": "
              "techniques": ["pcf", "ssao"], "seed": 3, "spp": 16, "hidden": true, "note": "extreme"}]})";
 
 std::string replaced(const std::string& find, const std::string& replace) {
-  std::string s = kDef;
-  const auto at = s.find(find);
-  EXPECT_NE(at, std::string::npos) << find;
-  return s.replace(at, find.size(), replace);
+  return rtlab::test::replacedOnce(kDef, find, replace);
 }
 } // namespace
 

@@ -37,10 +37,7 @@ float g(float x) {
 )";
 
 std::string withLine(const std::string& text, const std::string& find, const std::string& replace) {
-  std::string s = text;
-  const auto at = s.find(find);
-  EXPECT_NE(at, std::string::npos) << find;
-  return s.replace(at, find.size(), replace);
+  return rtlab::test::replacedOnce(text, find, replace);
 }
 
 } // namespace
