@@ -100,7 +100,13 @@ struct Preprocessor {
         out << "#line " << lineNo + 1 << " " << index << "\n";
         sawVersion = true;
       } else if (std::regex_match(line, m, includeRe)) {
-        include(resolvePath(m[1].str(), &file), path, lineNo, false, defines);
+        const Located target = resolvePath(m[1].str(), &file);
+        // A replacement (a student's file) reads only rtlab's shaders: nothing else on the
+        // machine may end up in a compile error's message (docs/exercises.md "Safety").
+        if (file.replacement && (target.logical.empty() || target.logical.rfind("..", 0) == 0))
+          shaderError(path + ":" + std::to_string(lineNo) + ": an exercise file may include only files under shaders/ (not '" +
+                      m[1].str() + "')");
+        include(target, path, lineNo, false, defines);
         out << "#line " << lineNo + 1 << " " << index << "\n";
       } else {
         out << line << "\n";

@@ -435,3 +435,28 @@ TEST(ExerciseCli, ViewsFileToleranceReplacesTheExercises) {
   const Grade strict = grade(folder, {"--views", firstViews("pcf", 2, dir).string()});
   EXPECT_EQ(strict.result["score"], 0) << describe(strict);
 }
+
+// A student's file may include rtlab's shaders only: an include of any other file on the machine is
+// a compile error naming the student's file:line, and the other file's text appears nowhere.
+TEST(ExerciseCli, StudentFilesIncludeOnlyShippedShaders) {
+  const fs::path dir = freshTestDir("exercise");
+  const fs::path folder = newFolder("shadow_map", dir);
+  const fs::path secret = dir / "secret.glsl";
+  writeText(secret, "SECRET_TOKEN_42\n");
+  const std::string file = folderFiles(folder).front();
+  const std::string text = slurp(folder / file);
+  const std::vector<std::string> includes = {secret.string(), "../../../secret.glsl",
+                                             "../../../../../../../../../../" + secret.relative_path().string()};
+  for (const auto& include : includes) {
+    SCOPED_TRACE(include);
+    writeText(folder / file, "#include \"" + include + "\"\n" + text);
+    const Grade g = grade(folder, {"--views", firstViews("shadow_map", 1, dir).string()});
+    EXPECT_EQ(g.process.exitCode, 5) << describe(g);
+    EXPECT_NE(g.process.err.find((folder / file).string() + ":1: an exercise file may include only files under shaders/"),
+              std::string::npos) << g.process.err;
+    EXPECT_EQ(g.process.err.find("SECRET_TOKEN_42"), std::string::npos);
+    EXPECT_EQ(g.process.out.find("SECRET_TOKEN_42"), std::string::npos);
+  }
+  // (Includes of shipped shaders from a student's file work: ShippedSolutionScores100/pcss, whose
+  // visibility.frag includes shadow_space.glsl and shadow_filter.glsl.)
+}
