@@ -46,7 +46,7 @@ int runView(int argc, char** argv) {
   }
   ViewerOptions options;
   options.frame = resolveFrame(args);
-  applyExerciseOption(args, options.frame);
+  options.exercise = applyExerciseOption(args, options.frame);
   const TechniqueRegistry& registry = TechniqueRegistry::instance();
   options.screenshot = args.get("--screenshot");
   if (!options.screenshot.empty()) {

@@ -17,8 +17,8 @@ OptionSpec exerciseOptionSpec() {
           "run with an exercise folder's files in place of the shipped ones (activates its technique without -t)"};
 }
 
-bool applyExerciseOption(const Args& args, ResolvedFrame& frame) {
-  if (!args.has("--exercise")) return false;
+std::string applyExerciseOption(const Args& args, ResolvedFrame& frame) {
+  if (!args.has("--exercise")) return "";
   const ExerciseFolder folder = readExerciseFolder(args.get("--exercise"));
   gl::ShaderOverlay overlay;
   for (const auto& f : folderReplacements(folder)) overlay[f.shaderRelative] = gl::ShaderReplacement{f.path, f.text, f.inMemory};
@@ -29,7 +29,7 @@ bool applyExerciseOption(const Args& args, ResolvedFrame& frame) {
     selection.activate(folder.def->technique);
     frame.techniques = selection.ordered();
   }
-  return true;
+  return "exercise " + folder.def->id + " (" + folder.dir + ")";
 }
 
 std::vector<ParamSpec> exerciseParams(const ExerciseDef& def) {

@@ -14,8 +14,9 @@ OptionSpec exerciseOptionSpec();
 
 // With --exercise DIR: reads the folder (Error(Input), exit 3, when it is not an exercise folder),
 // installs its files in place of the shipped shaders, and activates the exercise's technique when
-// the command line has no -t. Returns false without --exercise. Call before any program is built.
-bool applyExerciseOption(const Args& args, ResolvedFrame& frame);
+// the command line has no -t. Returns "exercise ID (DIR)" for titles, or "" without --exercise.
+// Call before any program is built.
+std::string applyExerciseOption(const Args& args, ResolvedFrame& frame);
 
 // The parameters an assignment lists: the technique's own, then its stage's.
 std::vector<ParamSpec> exerciseParams(const ExerciseDef& def);

@@ -77,7 +77,8 @@ void initState(ViewerState& state, ViewerOptions& options) {
 
 int runViewer(ViewerOptions options) {
   const ResolvedFrame& f = options.frame;
-  auto context = createWindowContext(f.options.width, f.options.height, "rtlab view — " + f.scene.name);
+  const std::string title = "rtlab view — " + f.scene.name + (options.exercise.empty() ? "" : " — " + options.exercise);
+  auto context = createWindowContext(f.options.width, f.options.height, title);
   GLFWwindow* window = context->window();
   DroppedFiles dropped;
   glfwSetWindowUserPointer(window, &dropped);

@@ -18,6 +18,7 @@ struct ViewerOptions {
   std::optional<std::vector<ScriptAction>> script; // --script, validated
   std::vector<Bookmark> bookmarks;                 // --bookmarks, validated
   std::string bookmarksSource;
+  std::string exercise;                            // --exercise: "exercise ID (DIR)", in the title
 };
 
 // Opens the window (Error(NoContext) without a display) and runs until the window closes, Esc,
