@@ -5,7 +5,6 @@
 #include "util/error.h"
 
 #include <cmath>
-#include <future>
 #include <iostream>
 
 namespace rtlab {
@@ -22,9 +21,9 @@ const char* runStatusName(ViewRunStatus s) {
   return "crashed";
 }
 
-std::vector<ViewRun> run(const ExerciseFolder& folder, const GradeOptions& options, WorkerFiles files,
-                         double timeLimit, const char* what) {
-  if (options.progress) std::cerr << "rtlab: grading " << folder.def->id << ": rendering " << options.views.size()
+std::vector<ViewRun> run(const ExerciseFolder& folder, const GradeOptions& options, const std::vector<ExerciseView>& views,
+                         WorkerFiles files, double timeLimit, const char* what) {
+  if (options.progress) std::cerr << "rtlab: grading " << folder.def->id << ": rendering " << views.size()
                                   << " views with " << what << "\n";
   WorkerRequest request;
   request.exercise = folder.def->id;
@@ -33,7 +32,7 @@ std::vector<ViewRun> run(const ExerciseFolder& folder, const GradeOptions& optio
   request.aov = folder.def->aov;
   request.backend = options.backend;
   request.references = files == WorkerFiles::Solution;
-  request.views = options.views;
+  request.views = views;
   return runViewsInWorkers(request, timeLimit);
 }
 
@@ -47,30 +46,48 @@ double rmse(const Image& a, const Image& b) {
 GradeResult gradeExercise(const ExerciseFolder& folder, const GradeOptions& options) {
   // The solution and the stubs are rtlab's own code: a generous limit only guards against a hang.
   const double trustedLimit = std::max(300.0, 10.0 * options.timeLimitSeconds);
-  // The solution (with the references) and the stubs render side by side; the student's files
-  // render afterwards, alone, so that their time limit and `ms` are not shared with other work.
-  auto stubRuns = std::async(std::launch::async, [&] { return run(folder, options, WorkerFiles::Stub, trustedLimit, "the stubs"); });
-  const auto solution = run(folder, options, WorkerFiles::Solution, trustedLimit, "the solution");
-  const auto stub = stubRuns.get();
+  // The solution (with the references) first; then the student's files, alone, so that their time
+  // limit and `ms` are not shared with other work.
+  const auto solution = run(folder, options, options.views, WorkerFiles::Solution, trustedLimit, "the solution");
   for (std::size_t i = 0; i < solution.size(); ++i)
     if (solution[i].status != ViewRunStatus::Ok) {
       const ExitCode code = solution[i].code > 1 ? ExitCode(solution[i].code) : ExitCode::Internal;
       throw Error(code, "view '" + options.views[i].name + "': the solution did not render: " + solution[i].message);
     }
-  const auto student = run(folder, options, WorkerFiles::Student, options.timeLimitSeconds, "the student's files");
+  const auto student = run(folder, options, options.views, WorkerFiles::Student, options.timeLimitSeconds, "the student's files");
+
+  // Judged without the stubs first; only the views that failed over finite values render with the
+  // stubs, to tell "the stub is still there" from other differences (a passing folder renders none).
+  const std::size_t n = options.views.size();
+  std::vector<ViewComparison> comparisons(n);
+  std::vector<std::size_t> needStub;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (student[i].status != ViewRunStatus::Ok) continue;
+    comparisons[i] = compareWithSolution(student[i].image, solution[i].image, nullptr, options.tolerance);
+    if (!comparisons[i].passed && comparisons[i].nonFinite == 0) needStub.push_back(i);
+  }
+  if (!needStub.empty()) {
+    std::vector<ExerciseView> views;
+    for (std::size_t i : needStub) views.push_back(options.views[i]);
+    const auto stub = run(folder, options, views, WorkerFiles::Stub, trustedLimit, "the stubs");
+    for (std::size_t k = 0; k < needStub.size(); ++k) {
+      const std::size_t i = needStub[k];
+      if (stub[k].status == ViewRunStatus::Ok)
+        comparisons[i] = compareWithSolution(student[i].image, solution[i].image, &stub[k].image, options.tolerance);
+    }
+  }
 
   GradeResult result;
   result.exercise = folder.def->id;
   int passed = 0;
-  for (std::size_t i = 0; i < options.views.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     ViewGrade g;
     g.name = options.views[i].name;
     g.ms = student[i].ms;
     g.solutionRmseVsReference = rmse(solution[i].image, solution[i].reference);
     const ViewRun& s = student[i];
     if (s.status == ViewRunStatus::Ok) {
-      const Image* stubImage = stub[i].status == ViewRunStatus::Ok ? &stub[i].image : nullptr;
-      const ViewComparison c = compareWithSolution(s.image, solution[i].image, stubImage, options.tolerance);
+      const ViewComparison& c = comparisons[i];
       g.passed = c.passed;
       g.status = c.passed ? "passed" : "failed";
       g.cause = c.cause;
@@ -96,9 +113,9 @@ GradeResult gradeExercise(const ExerciseFolder& folder, const GradeOptions& opti
     passed += g.passed ? 1 : 0;
     result.views.push_back(std::move(g));
   }
-  const int n = int(result.views.size());
-  result.score = result.compileError.empty() ? int(std::lround(100.0 * passed / std::max(n, 1))) : 0;
-  result.passed = result.compileError.empty() && passed == n;
+  const int views = int(result.views.size());
+  result.score = result.compileError.empty() ? int(std::lround(100.0 * passed / std::max(views, 1))) : 0;
+  result.passed = result.compileError.empty() && passed == views;
   return result;
 }
 
