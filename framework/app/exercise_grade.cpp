@@ -97,7 +97,6 @@ GradeResult gradeExercise(const ExerciseFolder& folder, const GradeOptions& opti
       g.rmseVsReference = rmse(s.image, solution[i].reference);
     } else {
       g.status = runStatusName(s.status);
-      g.message = s.message;
       g.cause = s.status == ViewRunStatus::CompileError ? "compile_error: " + s.message
                 : s.status == ViewRunStatus::Timeout  ? "timeout: the render " + s.message +
                                                            " (an endless or very long loop?)"

@@ -32,7 +32,6 @@ struct ViewGrade {
   std::optional<double> rmseAgreeing; // over the pixels that do not differ (the bound's figure)
   double solutionRmseVsReference = 0.0;
   double ms = 0.0;          // the student's render of the view (wall time, including compiling on the first)
-  std::string message;      // compile error (file:line) or what ended the process
   // With keepImages:
   Image student, solution, reference;
   bool hasStudent = false;

@@ -20,9 +20,7 @@ OptionSpec exerciseOptionSpec() {
 std::string applyExerciseOption(const Args& args, ResolvedFrame& frame) {
   if (!args.has("--exercise")) return "";
   const ExerciseFolder folder = readExerciseFolder(args.get("--exercise"));
-  gl::ShaderOverlay overlay;
-  for (const auto& f : folderReplacements(folder)) overlay[f.shaderRelative] = gl::ShaderReplacement{f.path, f.text, f.inMemory};
-  gl::setShaderOverlay(std::move(overlay));
+  installShaderReplacements(folderReplacements(folder));
   if (!args.has("--technique")) {
     TechniqueSelection selection(TechniqueRegistry::instance());
     for (const auto& id : frame.techniques) selection.activate(id);
@@ -30,6 +28,12 @@ std::string applyExerciseOption(const Args& args, ResolvedFrame& frame) {
     frame.techniques = selection.ordered();
   }
   return "exercise " + folder.def->id + " (" + folder.dir + ")";
+}
+
+void installShaderReplacements(const std::vector<ShaderFileReplacement>& files) {
+  gl::ShaderOverlay overlay;
+  for (const auto& f : files) overlay[f.shaderRelative] = gl::ShaderReplacement{f.path, f.text, f.inMemory};
+  gl::setShaderOverlay(std::move(overlay));
 }
 
 std::vector<ParamSpec> exerciseParams(const ExerciseDef& def) {

@@ -4,6 +4,7 @@
 #include "app/args.h"
 #include "app/frame_options.h"
 #include "exercise/exercise_def.h"
+#include "exercise/exercise_folder.h"
 #include "params/param_spec.h"
 
 #include <vector>
@@ -17,6 +18,9 @@ OptionSpec exerciseOptionSpec();
 // the command line has no -t. Returns "exercise ID (DIR)" for titles, or "" without --exercise.
 // Call before any program is built.
 std::string applyExerciseOption(const Args& args, ResolvedFrame& frame);
+
+// Puts the files in place of the shipped shaders for this process (gl::setShaderOverlay).
+void installShaderReplacements(const std::vector<ShaderFileReplacement>& files);
 
 // The parameters an assignment lists: the technique's own, then its stage's.
 std::vector<ParamSpec> exerciseParams(const ExerciseDef& def);

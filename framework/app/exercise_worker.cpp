@@ -1,12 +1,12 @@
 #include "app/exercise_worker.h"
 
 #include "app/args.h"
+#include "app/exercise_option.h"
 #include "app/frame_options.h"
 #include "app/measure.h"
 #include "app/reference_run.h"
 #include "exercise/exercise_folder.h"
 #include "frame/registry.h"
-#include "gl/shader_overlay.h"
 #include "platform/context.h"
 #include "reference/reference_registry.h"
 #include "render/renderer.h"
@@ -27,12 +27,6 @@ const char* filesName(WorkerFiles f) {
   case WorkerFiles::Student: return "student";
   }
   return "solution";
-}
-
-void installReplacements(const std::vector<ShaderFileReplacement>& files) {
-  gl::ShaderOverlay overlay;
-  for (const auto& f : files) overlay[f.shaderRelative] = gl::ShaderReplacement{f.path, f.text, f.inMemory};
-  gl::setShaderOverlay(std::move(overlay));
 }
 
 nlohmann::json shape(const Image& image) {
@@ -93,8 +87,8 @@ int runExerciseWorker() {
   const std::string input((std::istreambuf_iterator<char>(std::cin)), std::istreambuf_iterator<char>());
   const WorkerRequest request = workerRequestFromJson(nlohmann::json::parse(input));
   const ExerciseDef& def = findExercise(request.exercise);
-  if (request.files == WorkerFiles::Stub) installReplacements(stubReplacements(def));
-  if (request.files == WorkerFiles::Student) installReplacements(folderReplacements(readExerciseFolder(request.dir)));
+  if (request.files == WorkerFiles::Stub) installShaderReplacements(stubReplacements(def));
+  if (request.files == WorkerFiles::Student) installShaderReplacements(folderReplacements(readExerciseFolder(request.dir)));
 
   const TechniqueRegistry& registry = TechniqueRegistry::instance();
   std::unique_ptr<Context> context;

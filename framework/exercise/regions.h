@@ -24,8 +24,8 @@ struct ExerciseRegion {
 std::vector<ExerciseRegion> parseExerciseRegions(const std::string& text, const std::string& file,
                                                  bool studentCopy = false);
 
-// The student's copy of `text`: regions named in `chosen` keep their begin, task and end lines, get
-// a line saying the stub is a placeholder and their stub code instead of the solution; the other
+// The student's copy of `text`: regions named in `chosen` keep their begin, task and end lines, and
+// get kStubNotice and their stub code (neutral values) in place of the solution; the other
 // regions lose their marker, task and stub lines and keep the solution. Lines outside regions are
 // unchanged.
 std::string studentCopy(const std::string& text, const std::string& file, const std::set<std::string>& chosen);
