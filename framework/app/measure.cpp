@@ -18,7 +18,6 @@ FrameStats renderMeasured(Renderer& renderer, const ResolvedFrame& frame, const 
     if (i >= warmup) stats.addFrame(timer, errors);
   }
   stats.setResources(renderer.resources());
-  stats.setCounters(renderer.counters());
   if (countHdrClamp) {
     FrameOutputs counted = outputs;
     counted.countHdrClamped = true;
@@ -28,6 +27,9 @@ FrameStats renderMeasured(Renderer& renderer, const ResolvedFrame& frame, const 
     if (errors > 0) logWarn(std::to_string(errors) + " GL errors in the frame that counts the HDR clamp");
     stats.setHdrClamped(renderer.readHdrClamped());
   }
+  // After the counting frame: a technique that counts only on such frames (bloom's non-finite and
+  // clamped pixels) reports that frame's counts; the others report the same frame again.
+  stats.setCounters(renderer.counters());
   if (stats.glErrors() > 0) logWarn(std::to_string(stats.glErrors()) + " GL errors during the measured frames");
   return stats;
 }
