@@ -95,9 +95,13 @@ void drawInfoOverlay(const ViewerState& state, int renderWidth, int renderHeight
     ImGui::Text("%.1f ms (%s)  %dx%d", state.frameMs, state.timingMethod.c_str(), renderWidth, renderHeight);
     const auto& r = state.reference;
     if (state.compare.mode == CompareMode::Reference || state.compare.mode == CompareMode::Difference) {
+      // An exact reference has no sample count: it is computing, or complete.
+      const std::string samples = r.exact ? std::string("exact") : std::to_string(r.metricsSamples) + " spp";
       if (r.rmse)
-        ImGui::TextWrapped("%s vs reference: RMSE %.4f  FLIP %.4f  (%d spp)", r.aov.c_str(), *r.rmse,
-                           r.flip.value_or(0.0), r.metricsSamples);
+        ImGui::TextWrapped("%s vs reference: RMSE %.4f  FLIP %.4f  (%s)", r.aov.c_str(), *r.rmse,
+                           r.flip.value_or(0.0), samples.c_str());
+      else if (r.exact)
+        ImGui::Text("reference: %s", r.running ? ("computing " + r.aov + " (exact)...").c_str() : "exact");
       else
         ImGui::Text("reference: %d spp", r.samples);
     }

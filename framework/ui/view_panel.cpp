@@ -69,8 +69,15 @@ void drawComparePanel(ViewerState& state) {
   helpMarker("Freezes the current picture as the right side of the snapshot wipe.");
   const auto& r = state.reference;
   if (!r.aov.empty()) {
-    ImGui::TextWrapped("reference: %s, %d spp%s", r.aov.c_str(), r.samples, r.running ? " (refining)" : "");
-    if (r.rmse)
+    if (r.exact && r.running)
+      ImGui::TextWrapped("reference: %s, exact, computing... (the UI does not wait for it)", r.aov.c_str());
+    else if (r.exact)
+      ImGui::TextWrapped("reference: %s, exact, computed in %.2f s", r.aov.c_str(), r.seconds);
+    else
+      ImGui::TextWrapped("reference: %s, %d spp%s", r.aov.c_str(), r.samples, r.running ? " (refining)" : "");
+    if (r.rmse && r.exact)
+      ImGui::TextWrapped("RMSE %.4f  FLIP %.4f  against the exact reference", *r.rmse, r.flip.value_or(0.0));
+    else if (r.rmse)
       ImGui::TextWrapped("RMSE %.4f  FLIP %.4f  at %d spp", *r.rmse, r.flip.value_or(0.0), r.metricsSamples);
     else
       ImGui::TextDisabled("%s",

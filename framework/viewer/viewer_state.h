@@ -92,8 +92,10 @@ struct ViewerState {
   // the visible frame against it (empty until computed).
   struct {
     std::string aov;
-    int samples = 0;
-    bool running = false;
+    int samples = 0;      // the progressive mean's spp; a one-shot reference's spp once computed
+    bool running = false; // refining, or (one-shot) computing
+    bool exact = false;   // a one-shot reference that does not sample (bloom): complete once computed
+    double seconds = 0.0; // a one-shot reference's compute time, once computed
     std::optional<double> rmse, flip;
     int metricsSamples = 0; // the reference's spp when the metrics were computed
     std::string waiting;    // why there are no metrics yet ("reference: 8 / 16 spp")

@@ -1,14 +1,22 @@
-// Compare mode's ground truth in the viewer: the progressive Embree reference of the active
-// stage's AOV (reference/progressive_reference.h), refined on a worker thread while the view is
-// still and restarted whenever something it depends on changes (scene, lights, camera,
-// ao.radius, render size, AOV); the UI never waits for it. Each new batch is uploaded for the
-// wipe and the difference view, and the live metrics of the visible frame's AOV against it are
-// computed as `rtlab compare` computes them (reference/live_metrics.h: from 16 spp on). A restart
-// after a camera or light change reuses the reference's BVH; a new scene builds it again.
+// Compare mode's ground truth in the viewer (docs/viewer.md "Compare mode"), one of two kinds:
+// - the progressive Embree reference of visibility, ao or indirect
+//   (reference/progressive_reference.h), refined on a worker thread while the view is still and
+//   restarted whenever something it depends on changes (scene, lights, camera, ao.radius, render
+//   size, AOV). Each new batch is uploaded; live metrics from 16 spp on. A restart after a camera
+//   or light change reuses the reference's BVH; a new scene builds it again.
+// - any other registered reference (reference/reference_registry.h; the post stage's `bloom`),
+//   computed once on a worker thread (viewer/reference_job.h) from what it reads back from the
+//   frame (the colour before post, the surface points), and computed again when anything it
+//   depends on changes: the scene, the render size, the AOV, every key referenceDependsOnKey
+//   names and the techniques of the other stages. Exact (no samples) when the reference does not
+//   sample; live metrics as soon as it is there.
+// The UI never waits for either; the live metrics of the visible frame's AOV against the
+// reference are computed as `rtlab compare` computes them (reference/live_metrics.h).
 #pragma once
 #include "gl/texture.h"
 #include "reference/progressive_reference.h"
 #include "render/renderer.h"
+#include "viewer/reference_job.h"
 #include "viewer/viewer_state.h"
 
 #include <cstdint>
@@ -17,16 +25,24 @@
 
 namespace rtlab {
 
-// The stage AOV compare mode shows: the debug view's AOV when it is a reference AOV and shown,
-// else the output of the first of shadow, ao, indirect with an active technique, else visibility.
+// The AOV compare mode shows: the debug view's AOV when it is shown and has a registered
+// reference; else, in frame order (shadow, ao, indirect, ..., post), the reference AOV of the first
+// stage that has one and an active technique producing that AOV; else visibility.
 std::string referenceAovFor(const ViewerState& state);
+// Whether compare mode refines `aov`'s reference progressively (visibility, ao, indirect) rather
+// than computing it once (ReferenceJob).
+bool isProgressiveReferenceAov(const std::string& aov);
+// Adds to `outputs` what the frame must keep for `aov`'s reference to be read back: the surface
+// points (the progressive ones, or a reference declaring them) and the colour before post.
+void addReferenceInputs(const std::string& aov, FrameOutputs& outputs);
 
 class ReferenceView {
 public:
-  // After a frame rendered with FrameOutputs{aovs: {aov}, surfaces: true}: restarts the
-  // reference if its inputs changed and then held still for a frame (while the camera or a light
-  // is being dragged it is only cancelled), takes the latest batch, updates state.reference, and
-  // measures the frame against it when the frame's parameters held still for a frame.
+  // After a frame rendered with the AOV and addReferenceInputs(aov): restarts the reference if its
+  // inputs changed and then held still for a frame (while the camera, a light or a key it depends
+  // on is being dragged it is only cancelled), takes the latest batch or result, updates
+  // state.reference, and measures the frame against it when the frame's parameters held still for
+  // a frame.
   void update(ViewerState& state, Renderer& renderer, unsigned seed, int width, int height);
   // Stops refining (compare mode off); does not wait for the worker.
   void stop(ViewerState& state);
@@ -40,6 +56,7 @@ private:
     unsigned long sceneGeneration = ~0ul, paramsRevision = ~0ul;
     int width = 0, height = 0;
     std::string aov;
+    std::vector<std::string> techniques; // a one-shot reference depends on the other stages' techniques
     bool operator==(const KeyInputs&) const = default;
   };
   // What the metrics were last computed from.
@@ -50,11 +67,20 @@ private:
     std::vector<std::string> techniques;
     bool operator==(const MetricsInputs&) const = default;
   };
+  std::string keyFor(const ViewerState& state, unsigned seed, int width, int height, const std::string& aov) const;
+  void cancel();
   void restart(ViewerState& state, Renderer& renderer, unsigned seed, const std::string& aov);
+  void restartProgressive(ViewerState& state, Renderer& renderer, unsigned seed, const std::string& aov);
+  void restartOneShot(ViewerState& state, Renderer& renderer, unsigned seed, const std::string& aov);
+  // Takes the running reference's latest batch or result into m_snapshot (uploaded); false while
+  // nothing of the current generation is there.
+  bool takeLatest(ViewerState& state);
   void measure(ViewerState& state, Renderer& renderer, int width, int height, const std::string& aov);
 
   ProgressiveReference m_reference;
-  ProgressiveSnapshot m_snapshot;
+  ReferenceJob m_job;
+  bool m_oneShot = false;       // the running reference is m_job's, not m_reference's
+  ProgressiveSnapshot m_snapshot; // the latest batch, or the one-shot result (converged)
   gl::Texture m_texture;
   KeyInputs m_keyInputs;
   std::string m_key;                      // everything the reference depends on, for m_keyInputs

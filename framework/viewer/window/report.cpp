@@ -32,6 +32,8 @@ nlohmann::ordered_json viewerReport(const ViewerState& state, int renderWidth, i
   j["reference"] = {{"aov", r.aov},
                     {"samples", r.samples},
                     {"running", r.running},
+                    {"exact", r.exact},
+                    {"seconds", r.seconds},
                     {"rmse", optionalNumberJson(r.rmse)},
                     {"flip", optionalNumberJson(r.flip)},
                     {"metrics_samples", r.metricsSamples},

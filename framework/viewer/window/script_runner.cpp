@@ -13,10 +13,13 @@ void ScriptRunner::step(ViewerState& state) {
     if (--m_waitFrames > 0) return;
   }
   if (m_waitingSamples) {
-    const bool reached = state.reference.samples >= m_samples && state.reference.metricsSamples >= m_samples;
+    // An exact reference has no samples to wait for: computed and measured against is reached.
+    const auto& r = state.reference;
+    const bool reached = r.exact ? r.samples > 0 && r.metricsSamples >= r.samples
+                                 : r.samples >= m_samples && r.metricsSamples >= m_samples;
     if (!reached && std::chrono::steady_clock::now() < m_deadline) return;
     if (!reached)
-      logWarn("script: wait_samples timed out at " + std::to_string(state.reference.samples) + " of " +
+      logWarn("script: wait_samples timed out at " + std::to_string(r.samples) + " of " +
               std::to_string(m_samples) + " spp; continuing");
     m_waitingSamples = false;
   }

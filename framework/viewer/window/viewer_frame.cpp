@@ -42,7 +42,7 @@ FrameOutputs ViewerFrame::outputsFor(ViewerState& state, bool reference, const s
   if (reference) {
     if (std::find(outputs.aovs.begin(), outputs.aovs.end(), referenceAov) == outputs.aovs.end())
       outputs.aovs.push_back(referenceAov);
-    outputs.surfaces = true;
+    addReferenceInputs(referenceAov, outputs);
   }
   return outputs;
 }
