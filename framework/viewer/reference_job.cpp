@@ -1,7 +1,9 @@
 // One worker thread per ReferenceJob (reference_job.h): it waits for a pending job, runs the
 // entry's compute function outside the lock, and publishes the image if its generation is still
 // the current one. The mutex guards only the pending job and the published result, so start(),
-// latest() and the status calls return at once while a computation runs.
+// latest() and the status calls return at once while a computation runs. The worker shares the
+// state (shared_ptr), so that the destructor can leave a computation in progress to finish on its
+// own.
 #include "viewer/reference_job.h"
 
 #include "scene/scene_params.h"
@@ -32,6 +34,7 @@ struct ReferenceJob::State {
   std::uint64_t pendingGeneration = 0;
   std::uint64_t generation = 0; // of the last start()
   bool quit = false;
+  bool busy = false;    // the worker is computing (whatever the generation)
   bool running = false; // the current generation is pending or computing
   ReferenceJobResult result;       // the last published image (generation 0: none yet)
   std::string error;               // the last failure, and the generation it belongs to
@@ -49,6 +52,7 @@ void ReferenceJob::State::loop() {
     ReferenceJobInput job = std::move(*pending);
     const std::uint64_t jobGeneration = pendingGeneration;
     pending.reset();
+    busy = true;
     lock.unlock();
 
     ReferenceJobResult out;
@@ -70,6 +74,7 @@ void ReferenceJob::State::loop() {
     }
 
     lock.lock();
+    busy = false;
     if (jobGeneration != generation || !running) continue; // superseded or cancelled meanwhile
     if (failure.empty()) {
       result = std::move(out);
@@ -81,20 +86,27 @@ void ReferenceJob::State::loop() {
   }
 }
 
-ReferenceJob::ReferenceJob() : m_state(std::make_unique<State>()) {
-  State* state = m_state.get();
-  m_state->worker = std::thread([state] { state->loop(); });
+ReferenceJob::ReferenceJob() : m_state(std::make_shared<State>()) {
+  m_state->worker = std::thread([state = m_state] { state->loop(); });
 }
 
 ReferenceJob::~ReferenceJob() {
+  bool computing = false;
   {
     std::lock_guard lock(m_state->mutex);
     m_state->quit = true;
     m_state->pending.reset();
     m_state->running = false;
+    computing = m_state->busy;
   }
   m_state->wake.notify_all();
-  m_state->worker.join();
+  // A compute function cannot be interrupted (bloom's takes tens of seconds for wide kernels at
+  // 1280x720): closing the viewer does not wait for it. The worker holds the state and its own
+  // copy of the input, drops the result and ends when the computation returns.
+  if (computing)
+    m_state->worker.detach();
+  else
+    m_state->worker.join();
 }
 
 std::uint64_t ReferenceJob::start(ReferenceJobInput input) {

@@ -8,8 +8,9 @@
 // start() never blocks: it replaces the pending job (if any) and returns. A compute function
 // cannot be interrupted, so a job started while another computes waits for it to finish; the
 // finished job's result is dropped when it was superseded or cancelled, and only the newest
-// pending job runs next (those in between never run). The destructor waits for a compute in
-// progress. GL-free: the viewer uploads the result (window/reference_view.h).
+// pending job runs next (those in between never run). The destructor does not wait for a compute
+// in progress: it finishes on its own and its result is dropped. GL-free: the viewer uploads the
+// result (window/reference_view.h).
 #pragma once
 #include "image/image.h"
 #include "params/param_set.h"
@@ -50,7 +51,7 @@ struct ReferenceJobResult {
 class ReferenceJob {
 public:
   ReferenceJob();
-  ~ReferenceJob(); // drops the pending job and waits for a compute in progress
+  ~ReferenceJob(); // drops the pending job; a compute in progress finishes on its own, unwaited
   ReferenceJob(const ReferenceJob&) = delete;
   ReferenceJob& operator=(const ReferenceJob&) = delete;
 
@@ -71,7 +72,7 @@ public:
 
 private:
   struct State;
-  std::unique_ptr<State> m_state;
+  std::shared_ptr<State> m_state;
 };
 
 } // namespace rtlab
