@@ -94,16 +94,6 @@ struct BloomRenderer {
   }
 };
 
-bloom::Definition definitionOf(const ParamSet& p) {
-  bloom::Definition d;
-  d.threshold = p.getFloat("bloom.threshold");
-  d.knee = p.getFloat("bloom.knee");
-  d.intensity = p.getFloat("bloom.intensity");
-  d.sigma = p.getFloat("bloom.sigma");
-  d.octaves = p.getInt("bloom.octaves");
-  d.hardCut = p.getBool("bloom.hard_cut");
-  return d;
-}
 
 // Mean of channel 0 over rings of width 1 pixel around (cx, cy), out to `radius`.
 std::vector<double> radialProfile(const Image& img, int cx, int cy, int radius) {
@@ -152,7 +142,7 @@ Image impulseAt(int w, int h, int x, int y, float value) {
 TEST(Bloom, SinglePixelFollowsTheDeclaredPsfAndKeepsItsEnergy) {
   BloomRenderer r(loadScene("contact"));
   r.set("bloom.karis", "false");
-  const bloom::Definition d = definitionOf(r.params);
+  const bloom::Definition d = bloom::definitionFrom(r.params);
   const int radius = bloom::gaussianRadius(bloom::octaveSigma(d, d.octaves - 1));
   ASSERT_LT(radius, kSize / 2 - 1); // the kernel stays inside the frame
   for (const int phase : {0, 1, 2, 3}) {
@@ -329,7 +319,7 @@ TEST(Bloom, WidestKernelsAllocateNothingLargerThanTheFrame) {
   r.set("bloom.sigma", "64");
   r.set("bloom.octaves", "10");
   r.set("bloom.karis", "false");
-  const bloom::Definition d = definitionOf(r.params);
+  const bloom::Definition d = bloom::definitionFrom(r.params);
   const double energy = d.intensity * channelSum(bloom::brightPass(*g_input, d), 0);
   for (const char* method : {"gaussian", "mip"}) {
     r.set("bloom.method", method);
