@@ -487,7 +487,9 @@ TEST(SweepPlan, OnlyTheReferencesDeclaredKeysSplitIt) {
     const auto plan = nlohmann::json::parse(slurp(dir / "sweep.json"));
     EXPECT_EQ(plan["points"].size(), c.points) << c.args.back();
     EXPECT_EQ(plan["references"].size(), c.references) << c.args.back();
-    if (c.args[1] == "bloom") EXPECT_EQ(plan["spp"], 1);
+    if (c.args[1] == "bloom") {
+      EXPECT_EQ(plan["spp"], 1);
+    }
     fs::remove_all(dir);
   }
 }
