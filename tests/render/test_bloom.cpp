@@ -354,5 +354,49 @@ TEST(Bloom, OffIsFree) {
   EXPECT_EQ(r.renderer.colorVersionResource("hdr"), r.renderer.colorVersionResource("pre_post"));
 }
 
+// The CPU definition: the knee's w stays in [0, 1], is 0 below T - K, continuous across T - K and
+// T + K (where the quadratic meets 0 and the linear part), and equals (luma - T)/luma above T + K.
+TEST(BloomModel, SoftKneeWeightIsContinuousAndBounded) {
+  bloom::Definition d;
+  d.threshold = 1.0f;
+  d.knee = 0.5f;
+  for (float luma = 0.0f; luma < 4.0f; luma += 0.001f) {
+    const float w = bloom::brightWeight(luma, d);
+    ASSERT_GE(w, 0.0f) << luma;
+    ASSERT_LE(w, 1.0f) << luma;
+    if (luma < 0.5f) {
+      ASSERT_EQ(w, 0.0f) << luma;
+    }
+    if (luma > 1.5f) {
+      ASSERT_NEAR(w, (luma - 1.0f) / luma, 1e-4f) << luma;
+    }
+    ASSERT_LT(std::abs(bloom::brightWeight(luma + 1e-4f, d) - w), 1e-3f) << luma;
+  }
+}
+
+// The mip plan: weights >= 0 summing to 1 (energy kept) for every sigma, octave count and frame
+// size in the keys' ranges, levels within what the frame allows, and capped octaves only where an
+// octave is wider than the deepest level.
+TEST(BloomModel, MipPlanWeightsAreAPartitionOfUnity) {
+  for (float sigma : {0.5f, 1.0f, 2.0f, 3.3f, 8.0f, 64.0f})
+    for (int octaves = 1; octaves <= 10; ++octaves)
+      for (auto [w, h] : {std::pair{64, 48}, std::pair{320, 180}, std::pair{1280, 720}, std::pair{3, 2}}) {
+        bloom::Definition d;
+        d.sigma = sigma;
+        d.octaves = octaves;
+        const bloom::MipPlan plan = bloom::planMipChain(d, w, h);
+        ASSERT_LE(plan.levels, bloom::maxMipLevels(w, h));
+        ASSERT_EQ(plan.weights.size(), std::size_t(plan.levels) + 1);
+        double sum = 0;
+        for (float a : plan.weights) {
+          EXPECT_GE(a, 0.0f);
+          sum += a;
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-5) << sigma << " " << octaves << " " << w << "x" << h;
+        const bool widestFits = bloom::octaveSigma(d, octaves - 1) <= bloom::mipLevelSigma(bloom::maxMipLevels(w, h));
+        EXPECT_EQ(plan.cappedOctaves == 0, widestFits) << sigma << " " << octaves << " " << w << "x" << h;
+      }
+}
+
 } // namespace
 } // namespace rtlab
