@@ -76,7 +76,7 @@ public:
     info.title = "Bloom (Gaussian octaves; mip chain, Jimenez 2014)";
     info.summary = "Adds intensity x (soft-knee bright pass convolved with a mean of Gaussians of widths sigma*2^k) "
                    "to the linear colour";
-    info.showcaseScene = "contact";
+    info.showcaseScene = "glow";
     info.params = {
         ParamSpec::choice("bloom.method", "Method", {"gaussian", "mip"}, 1)
             .withHelp("gaussian: separable Gaussian per octave at full resolution (exact, cost grows with sigma*2^k); "
