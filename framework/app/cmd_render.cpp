@@ -62,7 +62,7 @@ int runRender(int argc, char** argv) {
   FrameOutputs outputs;
   if (!display) outputs.aovs = {aov};
   outputs.displayColor = display;
-  const FrameStats stats = renderMeasured(renderer, frame, outputs, timing, !statsPath.empty());
+  const FrameStats stats = renderMeasured(renderer, frame, outputs, timing, !statsPath.empty(), !statsPath.empty());
 
   Image image = display ? renderer.readDisplayColor() : renderer.readAov(aov);
   writeAovImage(out, image, aov, preview);

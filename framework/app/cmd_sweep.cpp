@@ -34,7 +34,7 @@ std::vector<OptionSpec> sweepOptions() {
   specs.push_back({"--force", "", false, "", "replace the sweep that --out DIR holds (refused without it, exit 6)"});
   specs.push_back({"--jobs", "", true, "N", "render N points at a time, each in its own process (default 1)"});
   specs.push_back({"--emit-jobs", "", true, "FILE", "plan only: write one shell command per job to FILE and exit"});
-  specs.push_back({"--spp", "", true, "N", "reference samples per pixel, 1..65536 (default 64)"});
+  specs.push_back({"--spp", "", true, "N", "reference samples per pixel, 1..65536 (default: the reference's, 64 for visibility, ao and indirect; bloom's does not sample: 1)"});
   specs.push_back({"--collect", "", true, "DIR", "merge a planned sweep's finished jobs into results.csv and report.html"});
   return specs;
 }

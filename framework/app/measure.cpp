@@ -1,12 +1,15 @@
 #include "app/measure.h"
 
 #include "gl/debug.h"
+#include "image/exposure.h"
 #include "util/log.h"
+
+#include <algorithm>
 
 namespace rtlab {
 
 FrameStats renderMeasured(Renderer& renderer, const ResolvedFrame& frame, const FrameOutputs& outputs,
-                          TimingMethod timing, bool countHdrClamp) {
+                          TimingMethod timing, bool countHdrClamp, bool exposure) {
   renderer.setTechniques(frame.techniques);
   drainGlErrors(); // set-up errors are not a frame's
   PassTimer timer(timing);
@@ -18,6 +21,18 @@ FrameStats renderMeasured(Renderer& renderer, const ResolvedFrame& frame, const 
     if (i >= warmup) stats.addFrame(timer, errors);
   }
   stats.setResources(renderer.resources());
+  if (exposure) {
+    // Before the counting frame, so that the last frame still has exactly the caller's outputs.
+    if (std::find(outputs.aovs.begin(), outputs.aovs.end(), "color") == outputs.aovs.end()) {
+      FrameOutputs withColor = outputs;
+      withColor.aovs.push_back("color");
+      PassTimer untimed(timing);
+      renderer.render(frame.params, frame.options.width, frame.options.height, withColor, untimed);
+      const int errors = drainGlErrors();
+      if (errors > 0) logWarn(std::to_string(errors) + " GL errors in the frame that measures the exposure");
+    }
+    stats.setExposure(measureExposure(renderer.readAov("color")));
+  }
   if (countHdrClamp) {
     FrameOutputs counted = outputs;
     counted.countHdrClamped = true;

@@ -55,7 +55,7 @@ std::string stageSection(const StageInfo& stage, const std::string& scene, const
   const SweepPlan& plan = c.plan;
   std::string s = "<p class=\"meta\">Scene <code>" + html::escape(scene) + "</code>, the <code>" + html::escape(plan.aov) +
                   "</code> AOV of every " + html::escape(stage.id) + " technique against the stage's reference (" +
-                  std::to_string(plan.spp) + " spp, computed on the CPU), at each technique's defaults; errors over "
+                  referenceSamplesText(plan) + ", computed on the CPU), at each technique's defaults; errors over "
                   "the surface pixels (docs/metrics.md). Full sweep: <a href=\"" + html::escape(folder) +
                   "/report.html\">" + html::escape(folder) + "/report.html</a>.</p>\n";
   const std::string warning = sweepTimingWarning(plan, c.info);
@@ -65,7 +65,7 @@ std::string stageSection(const StageInfo& stage, const std::string& scene, const
   std::string row;
   for (const auto& r : c.info.references)
     if (r.hash == plan.points.back().reference)
-      row += figure(folder + "/" + r.file, "<strong>reference</strong><br>" + std::to_string(plan.spp) + " spp");
+      row += figure(folder + "/" + r.file, "<strong>reference</strong><br>" + referenceSamplesText(plan));
   for (const auto& technique : plan.techniques) {
     const SweepResult* at = nullptr;
     for (const auto& r : c.results)
@@ -126,8 +126,10 @@ std::vector<AtlasStage> buildAtlas(const AtlasOptions& options) {
     if (techniques.empty()) continue;
     const std::string scene = stageScene(techniques);
     const std::string folder = "sweeps/" + stage.id;
+    // --spp is the sampling references' count; a reference that does not sample takes 1.
+    const int spp = std::min(options.spp, ReferenceRegistry::instance().findStage(stage.id)->maxSpp);
     std::vector<std::string> args = {"--scene", scene, "--size", std::to_string(options.width) + "x" + std::to_string(options.height),
-                                     "--frames", std::to_string(options.frames), "--spp", std::to_string(options.spp)};
+                                     "--frames", std::to_string(options.frames), "--spp", std::to_string(spp)};
     args.insert(args.end(), options.frameArgs.begin(), options.frameArgs.end());
     args.insert(args.end(), {"-t", join(techniques, ",")});
     for (const auto& v : atlasVaries(stage.id, techniques)) args.insert(args.end(), {"--vary", v});

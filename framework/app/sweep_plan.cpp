@@ -209,7 +209,6 @@ SweepPlan planSweep(const Args& frameArgs, const SweepRequest& request) {
   SweepPlan plan;
   plan.version = versionString();
   plan.commit = gitCommit();
-  plan.spp = request.spp;
   plan.jobs = request.jobs;
   plan.command = request.command;
   std::error_code cwdError;
@@ -235,8 +234,9 @@ SweepPlan planSweep(const Args& frameArgs, const SweepRequest& request) {
   if (!reference)
     usageError("technique '" + plan.techniques.front() + "' is in stage '" + plan.stage +
                "', which has no reference yet; sweep needs a stage with a reference: " + stageWithReferenceList());
-  if (request.spp < reference->minSpp || request.spp > reference->maxSpp)
-    usageError("--spp " + std::to_string(request.spp) + " is out of range " + std::to_string(reference->minSpp) + ".." +
+  plan.spp = request.spp > 0 ? request.spp : reference->defaultSpp;
+  if (plan.spp < reference->minSpp || plan.spp > reference->maxSpp)
+    usageError("--spp " + std::to_string(plan.spp) + " is out of range " + std::to_string(reference->minSpp) + ".." +
                std::to_string(reference->maxSpp) + " for the " + reference->aov + " reference");
   // What the points output and compare with the reference: the reference's own AOV (the stage's
   // output for shadow, ao and indirect; e.g. `bloom`, `arealight`, `transparency` for the others).

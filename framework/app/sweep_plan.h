@@ -53,7 +53,7 @@ struct SweepPlan {
 struct SweepRequest {
   std::vector<std::string> techniques; // -t values, comma lists allowed
   std::vector<std::string> varies;     // --vary values
-  int spp = 64;
+  int spp = 0;         // --spp; 0: the stage reference's default (64 for the ray-traced ones, 1 for bloom's)
   int jobs = 0;        // 0 with --emit-jobs
   std::string dir;
   std::string command; // shell-quoted command line

@@ -3,6 +3,7 @@
 #include "app/html.h"
 #include "frame/registry.h"
 #include "params/sweep_spec.h"
+#include "reference/reference_registry.h"
 #include "util/chart.h"
 
 #include <algorithm>
@@ -262,13 +263,18 @@ std::string heatScaleHtml(const SweepPlan& plan, const SweepReportInfo& info) {
          ". Gray: background, not measured. Click a heat map for its full-size image.</p>\n";
 }
 
+std::string referenceSamplesText(const SweepPlan& plan) {
+  const ReferenceEntry* reference = ReferenceRegistry::instance().findAov(plan.aov);
+  return reference && !reference->samples() ? "exact" : std::to_string(plan.spp) + " spp";
+}
+
 std::string sweepReportHtml(const SweepPlan& plan, const std::vector<SweepResult>& results,
                             const SweepReportInfo& info) {
   std::string techniques;
   for (const auto& t : plan.techniques) techniques += (techniques.empty() ? "" : ", ") + t;
   std::string body = "<h1>rtlab sweep: " + html::escape(techniques) + " (stage " + html::escape(plan.stage) + ")</h1>\n";
   body += "<p class=\"meta\">" + std::to_string(results.size()) + " points, error of the <code>" + html::escape(plan.aov) +
-          "</code> AOV against the reference (" + std::to_string(plan.spp) + " spp) over the surface pixels.</p>\n";
+          "</code> AOV against the reference (" + referenceSamplesText(plan) + ") over the surface pixels.</p>\n";
 
   // What decided the timings, next to the chart they are plotted on.
   const std::string size = std::to_string(plan.width) + "x" + std::to_string(plan.height);

@@ -40,6 +40,9 @@ struct SweepReportInfo {
 // more than one point running at a time (--jobs N > 1, or measured frames that overlapped) on a
 // software rasterizer, where the points share the CPU cores that draw them.
 std::string sweepTimingWarning(const SweepPlan& plan, const SweepReportInfo& info);
+// How the plan's reference was computed, for captions: "64 spp" for a sampling reference, "exact"
+// for one that does not sample (bloom's convolution).
+std::string referenceSamplesText(const SweepPlan& plan);
 
 // Notes that explain a sweep's results from the techniques' declared parameters, "" when none:
 // a technique whose own filter widths are in shadow-map texels, swept over shadow.resolution.

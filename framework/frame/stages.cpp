@@ -131,8 +131,9 @@ std::vector<ParamSpec> tonemapParams() {
   return {
       ParamSpec::real("tonemap.exposure", "Exposure", 1.0, 0.01, 100.0)
           .logScale().withHelp("Scene radiance is multiplied by this before the tone curve"),
-      ParamSpec::choice("tonemap.operator", "Operator", {"aces", "reinhard"}, 0)
-          .withHelp("Tone curve: ACES filmic fit (Narkowicz 2015) or Reinhard x/(1+x)"),
+      ParamSpec::choice("tonemap.operator", "Operator", {"aces", "reinhard", "clamp"}, 0)
+          .withHelp("Tone curve: ACES filmic fit (Narkowicz 2015), Reinhard x/(1+x), or clamp to [0,1] "
+                    "(no curve: the baseline that shows why HDR needs one)"),
   };
 }
 

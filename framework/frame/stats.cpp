@@ -70,6 +70,12 @@ nlohmann::ordered_json FrameStats::toJson() const {
   for (const auto& c : m_counters)
     counterArray.push_back({{"technique", c.technique}, {"name", c.name}, {"value", c.value}});
   j["counters"] = counterArray;
+  if (m_exposure)
+    j["exposure"] = {{"log_average_luminance", m_exposure->logAverageLuminance},
+                     {"max_luminance", m_exposure->maxLuminance},
+                     {"key_exposure", m_exposure->keyExposure},
+                     {"pixels", m_exposure->pixels},
+                     {"non_finite_pixels", m_exposure->nonFinite}};
   return j;
 }
 

@@ -2,11 +2,13 @@
 // --stats JSON of docs/contract.md.
 #pragma once
 #include "frame/pass_timer.h"
+#include "image/exposure.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +41,10 @@ public:
   const std::vector<HdrClampCount>& hdrClamped() const { return m_hdrClamped; }
   void setCounters(std::vector<CounterValue> counters) { m_counters = std::move(counters); }
   const std::vector<CounterValue>& counters() const { return m_counters; }
+  // The exposure readout of the last measured frame's `color` (image/exposure.h); written as
+  // "exposure" only when set.
+  void setExposure(const ExposureReadout& exposure) { m_exposure = exposure; }
+  const std::optional<ExposureReadout>& exposure() const { return m_exposure; }
 
   struct PassSummary {
     std::string name, technique;
@@ -54,7 +60,7 @@ public:
   double techniqueMs(const std::string& technique) const;
 
   // Fields that depend only on what was measured: frames, frame_ms, passes, resources,
-  // resource_bytes, gl_errors, hdr_clamped, counters. The caller adds the run's description (schema, version, ...).
+  // resource_bytes, gl_errors, hdr_clamped, counters, exposure (when set). The caller adds the run's description (schema, version, ...).
   nlohmann::ordered_json toJson() const;
 
 private:
@@ -67,6 +73,7 @@ private:
   std::vector<ResourceUse> m_resources;
   std::vector<HdrClampCount> m_hdrClamped;
   std::vector<CounterValue> m_counters;
+  std::optional<ExposureReadout> m_exposure;
   int m_glErrors = 0;
 };
 

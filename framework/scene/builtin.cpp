@@ -13,7 +13,7 @@ namespace rtlab {
 
 const std::vector<std::string>& builtinSceneNames() {
   static const std::vector<std::string> kNames = {"contact", "stacked", "cornell", "panes",
-                                                  "arealight"};
+                                                  "arealight", "glow"};
   return kNames;
 }
 
@@ -28,6 +28,7 @@ Scene makeBuiltinScene(const std::string& name) {
   if (name == "cornell") return builtin::makeCornell();
   if (name == "panes") return builtin::makePanes();
   if (name == "arealight") return builtin::makeAreaLight();
+  if (name == "glow") return builtin::makeGlow();
   std::string list;
   for (const std::string& n : builtinSceneNames()) list += (list.empty() ? "" : ", ") + n;
   usageError("unknown scene '" + name + "'" + didYouMean(name, builtinSceneNames()) + " (built-in scenes: " + list + ")");

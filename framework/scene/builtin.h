@@ -7,7 +7,7 @@
 
 namespace rtlab {
 
-// Names in the order `rtlab list` prints them: contact, stacked, cornell, panes, arealight.
+// Names in the order `rtlab list` prints them: contact, stacked, cornell, panes, arealight, glow.
 const std::vector<std::string>& builtinSceneNames();
 bool isBuiltinScene(const std::string& name);
 // Throws Error(Usage) naming the scene if unknown.

@@ -38,5 +38,6 @@ Scene makeStacked();
 Scene makeCornell();
 Scene makePanes();
 Scene makeAreaLight();
+Scene makeGlow();
 
 } // namespace rtlab::builtin

@@ -78,6 +78,11 @@ void drawTonemapPanel(ViewerState& state) {
   std::vector<ParamEdit> edits;
   drawParamGroup(state.params, "tonemap.", edits);
   applyEdits(state, edits);
+  // Read-only: the frame's log-average and largest luminance before exposure, and the exposure
+  // that maps the log-average to middle grey (docs/viewer.md "Exposure readout").
+  if (state.exposure)
+    ImGui::TextWrapped("log-average L %.3g  max %.3g  key exposure %.3g", state.exposure->logAverageLuminance,
+                       state.exposure->maxLuminance, state.exposure->keyExposure);
 }
 
 } // namespace rtlab

@@ -4,6 +4,7 @@
 // through the actions of viewer_actions.h, so both behave the same.
 #pragma once
 #include "frame/selection.h"
+#include "image/exposure.h"
 #include "params/param_set.h"
 #include "scene/scene.h"
 #include "viewer/bookmarks.h"
@@ -82,6 +83,9 @@ struct ViewerState {
   double frameMs = 0.0;                  // the last frame's total, by the timing method
   std::deque<float> frameHistory;        // recent frame totals (ms) for the history graph
   std::string timingMethod;              // "cpu-finish" | "gpu-query"
+  // The exposure readout of a recent frame's linear colour (docs/viewer.md "Exposure readout"),
+  // measured a few times per second; empty until the first one is read back.
+  std::optional<ExposureReadout> exposure;
   std::vector<std::string> shaderErrors; // file:line messages of failed (re)compiles
   std::string status;                    // the last action's message for the status line
   // The status is transient (a confirmation such as "screenshot a.png" or "bookmark 2/6"): it

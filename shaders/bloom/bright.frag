@@ -4,6 +4,7 @@
 // spread it; channels above the storage format's largest value are clamped to it. With BLOOM_COUNT
 // (a frame whose stats are written) both are counted, once per pixel, in the buffer at binding 0
 // (techniques/bloom/bloom.cpp kCountsBinding): [0] non-finite pixels, [1] clamped pixels.
+#include "../common/hdr.glsl"
 #include "bright.glsl"
 
 uniform sampler2D uColor;
@@ -18,13 +19,9 @@ layout(std430, binding = 0) buffer BloomCounts {
 
 layout(location = 0) out vec4 oBright;
 
-// True for NaN and +-inf: the exponent bits all set. A bit test, not isnan()/isinf(), which a
-// compiler that assumes finite math may fold to false.
-bool nonFinite(float x) { return (floatBitsToUint(x) & 0x7f800000u) == 0x7f800000u; }
-
 void main() {
   vec3 c = texelFetch(uColor, ivec2(gl_FragCoord.xy), 0).rgb;
-  if (nonFinite(c.r) || nonFinite(c.g) || nonFinite(c.b)) {
+  if (nonFinite(c)) {
 #ifdef BLOOM_COUNT
     atomicAdd(uNonFinite, 1u);
 #endif

@@ -16,8 +16,6 @@ uniform float uIntensity;
 
 layout(location = 0) out vec4 oColor;
 
-bool nonFinite(float x) { return (floatBitsToUint(x) & 0x7f800000u) == 0x7f800000u; }
-
 void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec3 base = texelFetch(uBloomBase, px, 0).rgb;
@@ -35,7 +33,7 @@ void main() {
   oColor = vec4(bloom, 1.0);
 #else
   vec4 c = texelFetch(uColor, px, 0);
-  if (nonFinite(c.r) || nonFinite(c.g) || nonFinite(c.b)) c.rgb = vec3(0.0);
+  if (nonFinite(c.rgb)) c.rgb = vec3(0.0);
   oColor = vec4(clampHdr(c.rgb + bloom), c.a);
 #endif
 }

@@ -21,6 +21,13 @@ vec3 clampHdr(vec3 c) {
   return min(c, vec3(kHalfMax));
 }
 
+// True when a channel of c is NaN or infinite (its exponent bits all set). A bit test rather than
+// isnan()/isinf(), which a compiler assuming finite math may fold to false.
+bool nonFinite(vec3 c) {
+  uvec3 exponent = floatBitsToUint(c) & 0x7f800000u;
+  return any(equal(exponent, uvec3(0x7f800000u)));
+}
+
 // Counts, in counter `slot`, a value that an earlier pass stored at the 16-bit limit (it was
 // clamped there, or was at least 65504 and would have rounded to it).
 void countHdrAtLimit(vec3 stored, int slot) {

@@ -61,16 +61,6 @@ gl::TextureDesc bloomTexture(int width, int height, GLenum format) {
   return d;
 }
 
-bloom::Definition definitionOf(const ParamSet& p) {
-  bloom::Definition d;
-  d.threshold = p.getFloat("bloom.threshold");
-  d.knee = p.getFloat("bloom.knee");
-  d.intensity = p.getFloat("bloom.intensity");
-  d.sigma = p.getFloat("bloom.sigma");
-  d.octaves = p.getInt("bloom.octaves");
-  d.hardCut = p.getBool("bloom.hard_cut");
-  return d;
-}
 
 // Sets the bright pass's uniforms on a program that includes shaders/bloom/bright.glsl.
 void setBrightUniforms(gl::Program& p, const bloom::Definition& d) {
@@ -86,7 +76,7 @@ public:
     info.title = "Bloom (Gaussian octaves; mip chain, Jimenez 2014)";
     info.summary = "Adds intensity x (soft-knee bright pass convolved with a mean of Gaussians of widths sigma*2^k) "
                    "to the linear colour";
-    info.showcaseScene = "contact";
+    info.showcaseScene = "glow";
     info.params = {
         ParamSpec::choice("bloom.method", "Method", {"gaussian", "mip"}, 1)
             .withHelp("gaussian: separable Gaussian per octave at full resolution (exact, cost grows with sigma*2^k); "
@@ -124,7 +114,7 @@ public:
 
   void setup(FrameGraph& frame) override {
     const ParamSet& params = frame.params();
-    const bloom::Definition d = definitionOf(params);
+    const bloom::Definition d = bloom::definitionFrom(params);
     const GLenum format = storageFormat(params.getEnum("bloom.format"));
     const bool mip = params.getEnumName("bloom.method") == "mip";
     const bool counting = frame.isImported(HdrClampCounters::kResource);

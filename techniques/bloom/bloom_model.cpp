@@ -6,6 +6,17 @@
 
 namespace rtlab::bloom {
 
+Definition definitionFrom(const ParamSet& p) {
+  Definition d;
+  d.threshold = p.getFloat("bloom.threshold");
+  d.knee = p.getFloat("bloom.knee");
+  d.intensity = p.getFloat("bloom.intensity");
+  d.sigma = p.getFloat("bloom.sigma");
+  d.octaves = p.getInt("bloom.octaves");
+  d.hardCut = p.getBool("bloom.hard_cut");
+  return d;
+}
+
 float brightWeight(float luma, const Definition& d) {
   const float t = d.threshold;
   if (d.hardCut) return luma > t ? 1.0f : 0.0f;

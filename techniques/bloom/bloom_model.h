@@ -5,6 +5,7 @@
 // declared one). The technique, its reference and its tests all use these definitions.
 #pragma once
 #include "image/image.h"
+#include "params/param_set.h"
 
 #include <cstdint>
 #include <vector>
@@ -19,6 +20,9 @@ struct Definition {
   int octaves = 5;          // n
   bool hardCut = false;     // the hard threshold luma > T ? c : 0 instead of the soft knee
 };
+
+// The definition a frame's bloom.* keys give.
+Definition definitionFrom(const ParamSet& params);
 
 inline constexpr float kLumaR = 0.2126f, kLumaG = 0.7152f, kLumaB = 0.0722f;
 

@@ -160,7 +160,7 @@ TEST_F(CliMessages, NumbersAsTypedOrShortest) {
   EXPECT_NE(r.err.find("value 1000 for 'light0.radius'"), std::string::npos) << r.err;
   EXPECT_FALSE(hasNoisyNumber(r.err, found)) << found << " in " << r.err;
   // rtlab list: every default and range, with the scene's own keys.
-  for (const char* scene : {"contact", "stacked", "cornell", "arealight"}) {
+  for (const char* scene : {"contact", "stacked", "cornell", "glow", "arealight"}) {
     r = rtlab({"list", "--scene", scene});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_FALSE(hasNoisyNumber(r.out, found)) << scene << ": " << found;

@@ -472,6 +472,10 @@ TEST(SweepPlan, OnlyTheReferencesDeclaredKeysSplitIt) {
       {{"-t", "ssao", "--scene", "cornell", "--vary", "ao.radius=0.3,0.6"}, 2, 2},
       {{"-t", "ssao", "--scene", "cornell", "--vary", "ssao.samples=4,16"}, 2, 1},
       {{"-t", "pcf", "--vary", "pcf.samples=4,16,32"}, 3, 1},
+      // bloom's reference does not sample: the sweep takes its spp (1) without --spp; it is
+      // defined by bloom.sigma, not by how the technique approximates it (method, format).
+      {{"-t", "bloom", "--vary", "bloom.sigma=1,2"}, 2, 2},
+      {{"-t", "bloom", "--vary", "bloom.method=gaussian,mip", "--vary", "bloom.format=rgba16f,r11g11b10f"}, 4, 1},
   };
   for (const auto& c : cases) {
     const fs::path dir = testDir() / "declared";
@@ -483,6 +487,9 @@ TEST(SweepPlan, OnlyTheReferencesDeclaredKeysSplitIt) {
     const auto plan = nlohmann::json::parse(slurp(dir / "sweep.json"));
     EXPECT_EQ(plan["points"].size(), c.points) << c.args.back();
     EXPECT_EQ(plan["references"].size(), c.references) << c.args.back();
+    if (c.args[1] == "bloom") {
+      EXPECT_EQ(plan["spp"], 1);
+    }
     fs::remove_all(dir);
   }
 }

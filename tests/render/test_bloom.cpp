@@ -94,16 +94,6 @@ struct BloomRenderer {
   }
 };
 
-bloom::Definition definitionOf(const ParamSet& p) {
-  bloom::Definition d;
-  d.threshold = p.getFloat("bloom.threshold");
-  d.knee = p.getFloat("bloom.knee");
-  d.intensity = p.getFloat("bloom.intensity");
-  d.sigma = p.getFloat("bloom.sigma");
-  d.octaves = p.getInt("bloom.octaves");
-  d.hardCut = p.getBool("bloom.hard_cut");
-  return d;
-}
 
 // Mean of channel 0 over rings of width 1 pixel around (cx, cy), out to `radius`.
 std::vector<double> radialProfile(const Image& img, int cx, int cy, int radius) {
@@ -152,7 +142,7 @@ Image impulseAt(int w, int h, int x, int y, float value) {
 TEST(Bloom, SinglePixelFollowsTheDeclaredPsfAndKeepsItsEnergy) {
   BloomRenderer r(loadScene("contact"));
   r.set("bloom.karis", "false");
-  const bloom::Definition d = definitionOf(r.params);
+  const bloom::Definition d = bloom::definitionFrom(r.params);
   const int radius = bloom::gaussianRadius(bloom::octaveSigma(d, d.octaves - 1));
   ASSERT_LT(radius, kSize / 2 - 1); // the kernel stays inside the frame
   for (const int phase : {0, 1, 2, 3}) {
@@ -329,7 +319,7 @@ TEST(Bloom, WidestKernelsAllocateNothingLargerThanTheFrame) {
   r.set("bloom.sigma", "64");
   r.set("bloom.octaves", "10");
   r.set("bloom.karis", "false");
-  const bloom::Definition d = definitionOf(r.params);
+  const bloom::Definition d = bloom::definitionFrom(r.params);
   const double energy = d.intensity * channelSum(bloom::brightPass(*g_input, d), 0);
   for (const char* method : {"gaussian", "mip"}) {
     r.set("bloom.method", method);
@@ -362,6 +352,50 @@ TEST(Bloom, OffIsFree) {
   for (const auto& p : r.renderer.lastPasses()) EXPECT_EQ(p.name.rfind("bloom", 0), std::string::npos) << p.name;
   for (const auto& res : r.renderer.resources()) EXPECT_EQ(res.name.rfind("bloom", 0), std::string::npos) << res.name;
   EXPECT_EQ(r.renderer.colorVersionResource("hdr"), r.renderer.colorVersionResource("pre_post"));
+}
+
+// The CPU definition: the knee's w stays in [0, 1], is 0 below T - K, continuous across T - K and
+// T + K (where the quadratic meets 0 and the linear part), and equals (luma - T)/luma above T + K.
+TEST(BloomModel, SoftKneeWeightIsContinuousAndBounded) {
+  bloom::Definition d;
+  d.threshold = 1.0f;
+  d.knee = 0.5f;
+  for (float luma = 0.0f; luma < 4.0f; luma += 0.001f) {
+    const float w = bloom::brightWeight(luma, d);
+    ASSERT_GE(w, 0.0f) << luma;
+    ASSERT_LE(w, 1.0f) << luma;
+    if (luma < 0.5f) {
+      ASSERT_EQ(w, 0.0f) << luma;
+    }
+    if (luma > 1.5f) {
+      ASSERT_NEAR(w, (luma - 1.0f) / luma, 1e-4f) << luma;
+    }
+    ASSERT_LT(std::abs(bloom::brightWeight(luma + 1e-4f, d) - w), 1e-3f) << luma;
+  }
+}
+
+// The mip plan: weights >= 0 summing to 1 (energy kept) for every sigma, octave count and frame
+// size in the keys' ranges, levels within what the frame allows, and capped octaves only where an
+// octave is wider than the deepest level.
+TEST(BloomModel, MipPlanWeightsAreAPartitionOfUnity) {
+  for (float sigma : {0.5f, 1.0f, 2.0f, 3.3f, 8.0f, 64.0f})
+    for (int octaves = 1; octaves <= 10; ++octaves)
+      for (auto [w, h] : {std::pair{64, 48}, std::pair{320, 180}, std::pair{1280, 720}, std::pair{3, 2}}) {
+        bloom::Definition d;
+        d.sigma = sigma;
+        d.octaves = octaves;
+        const bloom::MipPlan plan = bloom::planMipChain(d, w, h);
+        ASSERT_LE(plan.levels, bloom::maxMipLevels(w, h));
+        ASSERT_EQ(plan.weights.size(), std::size_t(plan.levels) + 1);
+        double sum = 0;
+        for (float a : plan.weights) {
+          EXPECT_GE(a, 0.0f);
+          sum += a;
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-5) << sigma << " " << octaves << " " << w << "x" << h;
+        const bool widestFits = bloom::octaveSigma(d, octaves - 1) <= bloom::mipLevelSigma(bloom::maxMipLevels(w, h));
+        EXPECT_EQ(plan.cappedOctaves == 0, widestFits) << sigma << " " << octaves << " " << w << "x" << h;
+      }
 }
 
 } // namespace

@@ -107,8 +107,8 @@ TEST(ReferenceInputs, PrePostColorIsTheFramesColourBeforePost) {
 
 TEST(ReferenceInputs, TheProcessRegistryHoldsTheBuiltins) {
   const ReferenceRegistry& r = ReferenceRegistry::instance();
-  EXPECT_EQ(r.choices(), "visibility, ao, indirect");
-  for (const char* stage : {"shadow", "ao", "indirect"}) EXPECT_NE(r.findStage(stage), nullptr) << stage;
+  EXPECT_EQ(r.choices(), "visibility, ao, indirect, bloom");
+  for (const char* stage : {"shadow", "ao", "indirect", "post"}) EXPECT_NE(r.findStage(stage), nullptr) << stage;
 }
 
 } // namespace

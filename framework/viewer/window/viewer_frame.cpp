@@ -18,11 +18,14 @@ constexpr int kPipTopMarginPx = 80; // room for the info overlay's lines at the 
 } // namespace
 
 ViewerFrame::ViewerFrame(const TechniqueRegistry& registry, TimingMethod timing)
-    : m_registry(registry), m_renderer(registry), m_timer(timing), m_display(m_renderer.programs()) {}
+    : m_registry(registry), m_renderer(registry), m_timer(timing), m_display(m_renderer.programs()),
+      m_exposure(m_renderer.programs()) {}
 
-FrameOutputs ViewerFrame::outputsFor(ViewerState& state, bool reference, const std::string& referenceAov) {
+FrameOutputs ViewerFrame::outputsFor(ViewerState& state, bool reference, const std::string& referenceAov,
+                                     bool measureExposure) {
   FrameOutputs outputs;
   outputs.displayColor = true;
+  if (measureExposure) outputs.colors.push_back("hdr"); // the linear colour the exposure applies to
   if (state.view.mode != DebugMode::Off) {
     // Rendered only where draw(), a snapshot or the auto range uses it: the reference and
     // difference views replace the full-screen debug view, and hide the picture-in-picture.
@@ -77,14 +80,19 @@ void ViewerFrame::render(ViewerState& state, int windowWidth, int windowHeight, 
       referenceWanted || state.compare.mode == CompareMode::Reference || state.compare.mode == CompareMode::Difference;
   const std::string referenceAov = referenceAovFor(state);
   const auto now = std::chrono::steady_clock::now();
+  if (const auto readout = m_exposure.poll()) state.exposure = *readout;
   if (m_shaderError.empty() || now >= m_retryAt) {
     try {
       gl::restoreKnownState(); // the display and UI drawing leave their own state (docs/frame-graph.md)
-      m_renderer.render(state.params, m_width, m_height, outputsFor(state, reference, referenceAov), m_timer);
+      const bool measure = m_exposure.due(now);
+      m_renderer.render(state.params, m_width, m_height, outputsFor(state, reference, referenceAov, measure), m_timer);
       m_rendered = true;
       m_shaderError.clear();
       recordTimings(state);
       ++state.frames;
+      // Untimed, after the frame's passes: the reduction is read back at a later frame.
+      if (measure)
+        if (const gl::Texture* hdr = m_renderer.resource(m_renderer.colorVersionResource("hdr"))) m_exposure.start(*hdr, now);
     } catch (const Error& e) {
       // A program that never compiled (its technique was switched on while its file is broken):
       // the last picture stays and the message is shown; compiling is tried again twice a second.

@@ -6,6 +6,7 @@
 #include "render/renderer.h"
 #include "viewer/viewer_state.h"
 
+#include "viewer/window/exposure_meter.h"
 #include "viewer/window/frame_display.h"
 #include "viewer/window/reference_view.h"
 #include <chrono>
@@ -30,7 +31,7 @@ public:
   gl::ProgramCache& programs() { return m_renderer.programs(); }
 
 private:
-  FrameOutputs outputsFor(ViewerState& state, bool reference, const std::string& referenceAov);
+  FrameOutputs outputsFor(ViewerState& state, bool reference, const std::string& referenceAov, bool measureExposure);
   void recordTimings(ViewerState& state);
   void takeSnapshot(ViewerState& state, const DisplaySide& side);
   void autoRange(ViewerState& state);
@@ -42,6 +43,7 @@ private:
   Renderer m_renderer;
   PassTimer m_timer;
   FrameDisplay m_display;
+  ExposureMeter m_exposure;
   ReferenceView m_reference;
   gl::Texture m_snapshot;
   DisplaySide m_snapshotSide;
