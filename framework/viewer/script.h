@@ -15,6 +15,7 @@
 //   {"action": "snapshot"}                                         freeze the current frame as B
 //   {"action": "wait", "frames": 5}
 //   {"action": "wait_samples", "samples": 64, "timeout_s": 120}    until the reference has N spp
+//        (an exact reference: until it is computed and measured against)
 //   {"action": "screenshot", "file": "a.png"}                      the window, UI included
 //   {"action": "save_preset", "file": "p.json"}
 //   {"action": "load_preset", "file": "p.json"}
