@@ -79,6 +79,8 @@ void drawComparePanel(ViewerState& state) {
       ImGui::TextWrapped("RMSE %.4f  FLIP %.4f  against the exact reference", *r.rmse, r.flip.value_or(0.0));
     else if (r.rmse)
       ImGui::TextWrapped("RMSE %.4f  FLIP %.4f  at %d spp", *r.rmse, r.flip.value_or(0.0), r.metricsSamples);
+    else if (r.exact && r.waiting.empty())
+      ImGui::TextDisabled("metrics once the reference is computed");
     else
       ImGui::TextDisabled("%s",
                           r.waiting.empty() ? "metrics once the reference has converged enough" : r.waiting.c_str());
