@@ -31,6 +31,7 @@ print('%.6g' % math.sqrt(sum(x * x for x in v) / n))
 EOF
 }
 
+{
 echo "method,sigma,octaves,reference_octaves,format,karis,ms,rmse,relative_rmse"
 for s in $sigmas; do
   for n in $octaves; do
@@ -54,7 +55,8 @@ for s in $sigmas; do
       done
     done
   done
-done | tee "$tmp/all.csv"
+done
+} | tee "$tmp/all.csv"
 echo
 echo "== headline: cheapest mip at or below the error of gaussian with n/2 octaves, time ratio"
 $py - "$tmp/all.csv" <<'EOF'
