@@ -10,6 +10,7 @@
 #include "reference/surfaces.h"
 #include "scene/scene.h"
 
+#include <atomic>
 #include <functional>
 #include <initializer_list>
 #include <string>
@@ -64,6 +65,15 @@ public:
   int spp() const { return m_spp; }
   unsigned seed() const { return m_seed; }
   bool progress() const { return m_progress; }
+  // Cooperative cancellation (the viewer's compare mode restarts or closes while a reference
+  // computes): a compute function that runs longer than a moment checks cancelled() regularly and
+  // then throws Error(Interrupted); its result would be dropped anyway. threads(): how many threads
+  // it may use (0: the hardware's), so a window sharing the machine keeps a core.
+  bool cancelled() const { return m_cancel && m_cancel->load(std::memory_order_relaxed); }
+  const std::atomic<bool>* cancelFlag() const { return m_cancel; }
+  unsigned threads() const { return m_threads; }
+  void setCancel(const std::atomic<bool>* flag) { m_cancel = flag; }
+  void setThreads(unsigned threads) { m_threads = threads; }
 
   // Set by the runner (app/reference_run.h) after reading the inputs back.
   void setSurfaces(const SurfaceData* surfaces) { m_surfaces = surfaces; }
@@ -78,6 +88,8 @@ private:
   bool m_progress;
   const SurfaceData* m_surfaces = nullptr;
   const Image* m_prePostColor = nullptr;
+  const std::atomic<bool>* m_cancel = nullptr;
+  unsigned m_threads = 0;
 };
 
 using ReferenceCompute = std::function<Image(const ReferenceFrame&, ReferenceStats&)>;

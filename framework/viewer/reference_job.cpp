@@ -1,14 +1,15 @@
 // One worker thread per ReferenceJob (reference_job.h): it waits for a pending job, runs the
 // entry's compute function outside the lock, and publishes the image if its generation is still
 // the current one. The mutex guards only the pending job and the published result, so start(),
-// latest() and the status calls return at once while a computation runs. The worker shares the
-// state (shared_ptr), so that the destructor can leave a computation in progress to finish on its
-// own.
+// latest() and the status calls return at once while a computation runs. A computation that is
+// superseded (start), cancelled or outlived (destructor) is told so through the frame's cancel flag
+// (ReferenceFrame::cancelled), so it ends within a moment and the destructor can join the worker.
 #include "viewer/reference_job.h"
 
 #include "scene/scene_params.h"
 #include "util/error.h"
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <exception>
@@ -36,6 +37,7 @@ struct ReferenceJob::State {
   bool quit = false;
   bool busy = false;    // the worker is computing (whatever the generation)
   bool running = false; // the current generation is pending or computing
+  std::atomic<bool> cancel{false}; // the computation in progress is no longer wanted
   ReferenceJobResult result;       // the last published image (generation 0: none yet)
   std::string error;               // the last failure, and the generation it belongs to
   std::uint64_t errorGeneration = 0;
@@ -53,6 +55,7 @@ void ReferenceJob::State::loop() {
     const std::uint64_t jobGeneration = pendingGeneration;
     pending.reset();
     busy = true;
+    cancel = false;
     lock.unlock();
 
     ReferenceJobResult out;
@@ -61,6 +64,10 @@ void ReferenceJob::State::loop() {
     std::string failure;
     try {
       ReferenceFrame frame(job.entry, job.scene, job.params, job.spp, job.seed, false);
+      frame.setCancel(&cancel);
+      // Leave a core to the window's rasterizer (llvmpipe renders on the CPU too).
+      const unsigned cores = std::thread::hardware_concurrency();
+      frame.setThreads(cores > 1 ? cores - 1 : 1);
       if (job.surfaces) frame.setSurfaces(&*job.surfaces);
       if (job.prePostColor) frame.setPrePostColor(&*job.prePostColor);
       ReferenceStats stats;
@@ -91,22 +98,15 @@ ReferenceJob::ReferenceJob() : m_state(std::make_shared<State>()) {
 }
 
 ReferenceJob::~ReferenceJob() {
-  bool computing = false;
   {
     std::lock_guard lock(m_state->mutex);
     m_state->quit = true;
     m_state->pending.reset();
     m_state->running = false;
-    computing = m_state->busy;
+    m_state->cancel = true; // a computation in progress stops within a row of work
   }
   m_state->wake.notify_all();
-  // A compute function cannot be interrupted (bloom's takes tens of seconds for wide kernels at
-  // 1280x720): closing the viewer does not wait for it. The worker holds the state and its own
-  // copy of the input, drops the result and ends when the computation returns.
-  if (computing)
-    m_state->worker.detach();
-  else
-    m_state->worker.join();
+  m_state->worker.join();
 }
 
 std::uint64_t ReferenceJob::start(ReferenceJobInput input) {
@@ -126,6 +126,7 @@ std::uint64_t ReferenceJob::start(ReferenceJobInput input) {
     m_state->pending = std::move(input);
     m_state->pendingGeneration = generation;
     m_state->running = true;
+    m_state->cancel = true; // the computation in progress (if any) is superseded
   }
   m_state->wake.notify_all();
   return generation;
@@ -135,6 +136,7 @@ void ReferenceJob::cancel() {
   std::lock_guard lock(m_state->mutex);
   m_state->pending.reset();
   m_state->running = false;
+  m_state->cancel = true;
 }
 
 bool ReferenceJob::latest(ReferenceJobResult& out) const {

@@ -5,12 +5,12 @@
 // convolution of the colour before post) the result is exact and complete at once; one that
 // samples is computed at its default sample count.
 //
-// start() never blocks: it replaces the pending job (if any) and returns. A compute function
-// cannot be interrupted, so a job started while another computes waits for it to finish; the
-// finished job's result is dropped when it was superseded or cancelled, and only the newest
-// pending job runs next (those in between never run). The destructor does not wait for a compute
-// in progress: it finishes on its own and its result is dropped. GL-free: the viewer uploads the
-// result (window/reference_view.h).
+// start() never blocks: it replaces the pending job (if any), tells a computation in progress
+// that it is superseded (ReferenceFrame::cancelled: a compute function checks it and stops within
+// a moment; bloom's per row), and returns; the superseded result is dropped, and only the newest
+// pending job runs next (those in between never run). cancel() and the destructor stop a
+// computation the same way; the destructor then joins the worker. The computation uses all cores
+// but one. GL-free: the viewer uploads the result (window/reference_view.h).
 #pragma once
 #include "image/image.h"
 #include "params/param_set.h"
@@ -51,7 +51,7 @@ struct ReferenceJobResult {
 class ReferenceJob {
 public:
   ReferenceJob();
-  ~ReferenceJob(); // drops the pending job; a compute in progress finishes on its own, unwaited
+  ~ReferenceJob(); // drops the pending job, cancels a computation in progress and waits for it to stop
   ReferenceJob(const ReferenceJob&) = delete;
   ReferenceJob& operator=(const ReferenceJob&) = delete;
 
@@ -59,8 +59,8 @@ public:
   // lacks what the entry declares (surfaces, colour before post), Error(Usage) for an spp outside
   // the entry's range; the queue is left as it was then.
   std::uint64_t start(ReferenceJobInput input);
-  // Drops the pending job and the result of the one computing (not waited for); running() is
-  // false from now on.
+  // Drops the pending job and cancels the one computing (not waited for); running() is false from
+  // now on.
   void cancel();
 
   // If the current generation's result is ready and `out` does not hold it yet, moves a copy into

@@ -1,5 +1,7 @@
 #include "techniques/bloom/bloom_model.h"
 
+#include "util/error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <thread>
@@ -80,8 +82,12 @@ std::vector<double> kernel(double sigma) {
 
 } // namespace
 
-Image convolve(const Image& bright, const Definition& d, unsigned threads) {
+Image convolve(const Image& bright, const Definition& d, unsigned threads, const std::atomic<bool>* cancel) {
   const int width = bright.width, height = bright.height;
+  auto stop = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
+  auto checkCancel = [&] {
+    if (stop()) throw Error(ExitCode::Interrupted, "bloom reference cancelled");
+  };
   const std::size_t n = bright.pixelCount() * 3;
   std::vector<double> sum(n, 0.0), rows(n);
   for (int k = 0; k < d.octaves; ++k) {
@@ -89,7 +95,7 @@ Image convolve(const Image& bright, const Definition& d, unsigned threads) {
     const int radius = int(w.size()) - 1;
     // Rows: taps outside the frame read black, so they are left out (not renormalised away).
     parallelRanges(height, threads, [&](int y0, int y1) {
-      for (int y = y0; y < y1; ++y)
+      for (int y = y0; y < y1 && !stop(); ++y)
         for (int x = 0; x < width; ++x) {
           double acc[3] = {0, 0, 0};
           const int lo = std::max(-radius, -x), hi = std::min(radius, width - 1 - x);
@@ -106,9 +112,10 @@ Image convolve(const Image& bright, const Definition& d, unsigned threads) {
           o[2] = acc[2];
         }
     });
+    checkCancel();
     // Columns, accumulated row by row so the inner loop runs along memory.
     parallelRanges(height, threads, [&](int y0, int y1) {
-      for (int y = y0; y < y1; ++y) {
+      for (int y = y0; y < y1 && !stop(); ++y) {
         const int lo = std::max(-radius, -y), hi = std::min(radius, height - 1 - y);
         double* o = &sum[std::size_t(y) * width * 3];
         for (int i = lo; i <= hi; ++i) {
@@ -118,6 +125,7 @@ Image convolve(const Image& bright, const Definition& d, unsigned threads) {
         }
       }
     });
+    checkCancel();
   }
   Image out(width, height, 3);
   const double scale = double(d.intensity) / double(std::max(d.octaves, 1));

@@ -7,6 +7,8 @@
 #include "image/image.h"
 #include "params/param_set.h"
 
+#include <atomic>
+
 #include <cstdint>
 #include <vector>
 
@@ -46,7 +48,10 @@ struct InputCounts {
 Image brightPass(const Image& color, const Definition& d, InputCounts* counts = nullptr);
 // intensity * (bright ⊛ PSF), outside the frame black: the exact value of the `bloom` AOV, computed
 // separably per octave in double precision on `threads` threads (0: the hardware's). Mask 1.
-Image convolve(const Image& bright, const Definition& d, unsigned threads = 0);
+// When `cancel` is set (checked every row), it stops within a row of work per thread and throws
+// Error(Interrupted).
+Image convolve(const Image& bright, const Definition& d, unsigned threads = 0,
+               const std::atomic<bool>* cancel = nullptr);
 
 // ---- the mip method ---------------------------------------------------------------------------
 

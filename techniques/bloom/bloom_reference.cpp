@@ -26,7 +26,7 @@ void registerReference_bloom(ReferenceRegistry& registry) {
     d.sigma = frame.getFloat("bloom.sigma");
     d.octaves = int(frame.getFloat("bloom.octaves"));
     d.hardCut = frame.getFloat("bloom.hard_cut") != 0.0f;
-    Image out = bloom::convolve(bloom::brightPass(frame.prePostColor(), d), d);
+    Image out = bloom::convolve(bloom::brightPass(frame.prePostColor(), d), d, frame.threads(), frame.cancelFlag());
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
   };

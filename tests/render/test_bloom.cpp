@@ -13,6 +13,7 @@
 #include "scene/mesh_builder.h"
 #include "shading/base_passes.h"
 #include "techniques/bloom/bloom_model.h"
+#include "util/error.h"
 #include "../support/fake_technique.h"
 
 #include <gtest/gtest.h>
@@ -396,6 +397,23 @@ TEST(BloomModel, MipPlanWeightsAreAPartitionOfUnity) {
         const bool widestFits = bloom::octaveSigma(d, octaves - 1) <= bloom::mipLevelSigma(bloom::maxMipLevels(w, h));
         EXPECT_EQ(plan.cappedOctaves == 0, widestFits) << sigma << " " << octaves << " " << w << "x" << h;
       }
+}
+
+// The reference's convolution stops when told to (the viewer restarts it on every change): with the
+// flag set it throws Error(Interrupted) before finishing its first pass.
+TEST(BloomModel, ConvolutionStopsWhenCancelled) {
+  Image bright(256, 256, 3);
+  bright.at(128, 128, 0) = 1.0f;
+  bloom::Definition d;
+  std::atomic<bool> cancel{true};
+  try {
+    bloom::convolve(bright, d, 2, &cancel);
+    FAIL() << "not cancelled";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::Interrupted);
+  }
+  cancel = false;
+  EXPECT_GT(bloom::convolve(bright, d, 2, &cancel).at(128, 128, 0), 0.0f);
 }
 
 } // namespace
