@@ -6,6 +6,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+# The benchmarks are not in the default build (bench/CMakeLists.txt).
+cmake --build build -j"$(nproc 2>/dev/null || echo 2)" --target rtlab_bench >/dev/null
 build/bench/rtlab_bench "$@"
 
 cache=$(mktemp -d)

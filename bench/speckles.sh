@@ -4,14 +4,15 @@
 # eroded by 3 px) where each technique's visibility exceeds 0.05, and the visibility RMSE against
 # the same reference. Runs on any OpenGL 4.5 driver (no GPU-specific code).
 # Usage: bash bench/speckles.sh [path/to/rtlab] [reference spp, default 256]
-# Needs build/bench/rtlab_bench_speckles (cmake --build build --target rtlab_bench_speckles).
+# Builds build/bench/rtlab_bench_speckles (not in the default build) into the configured build/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rtlab=$(realpath "${1:-build/rtlab}")
 spp=${2:-256}
 measure=build/bench/rtlab_bench_speckles
 [ -x "$rtlab" ] || { echo "speckles: no rtlab binary at $rtlab" >&2; exit 1; }
-[ -x "$measure" ] || { echo "speckles: no $measure (cmake --build build --target rtlab_bench_speckles)" >&2; exit 1; }
+[ -f build/CMakeCache.txt ] || { echo "speckles: no build/ (bash scripts/setup.sh first)" >&2; exit 1; }
+cmake --build build -j"$(nproc 2>/dev/null || echo 2)" --target rtlab_bench_speckles >/dev/null
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
