@@ -8,18 +8,6 @@
 namespace rtlab {
 namespace {
 
-// The scene as the reference may see it: the lights and camera as the frame's parameters set them;
-// its materials only when it declares FrameInput::Materials.
-Scene referenceScene(const ResolvedFrame& frame, const ReferenceEntry& reference) {
-  Scene scene = frame.scene;
-  applySceneParams(frame.params, scene);
-  if (!reference.inputs.has(FrameInput::Materials)) {
-    for (auto& m : scene.materials) m = Material{};
-    scene.textures.clear();
-  }
-  return scene;
-}
-
 // The frame's techniques outside the reference's own stage: the colour before post is what they
 // produce (the stage being measured is what the reference replaces).
 std::vector<std::string> techniquesBefore(const ResolvedFrame& frame, const ReferenceEntry& reference) {
@@ -53,7 +41,7 @@ Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const
   if (spp < reference.minSpp || spp > reference.maxSpp)
     usageError("--spp " + std::to_string(spp) + " is out of range " + std::to_string(reference.minSpp) + ".." +
                std::to_string(reference.maxSpp) + " for the " + reference.aov + " reference");
-  const Scene scene = referenceScene(frame, reference);
+  const Scene scene = sceneForReference(frame.scene, frame.params, reference);
   ReferenceFrame input(reference, scene, frame.params, spp, frame.options.seed, progress);
 
   SurfaceData surfaces;

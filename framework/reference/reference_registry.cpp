@@ -3,6 +3,7 @@
 #include "frame/registry.h"
 #include "frame/stages.h"
 #include "params/sweep_spec.h"
+#include "scene/scene_params.h"
 #include "util/error.h"
 #include "util/hash.h"
 #include "util/suggest.h"
@@ -98,6 +99,16 @@ const ReferenceEntry& ReferenceRegistry::get(const std::string& aov) const {
   std::vector<std::string> aovs;
   for (const auto& e : m_entries) aovs.push_back(e.aov);
   usageError("unknown reference AOV '" + aov + "'" + didYouMean(aov, aovs) + " (choices: " + choices() + ")");
+}
+
+Scene sceneForReference(const Scene& scene, const ParamSet& params, const ReferenceEntry& entry) {
+  Scene out = scene;
+  applySceneParams(params, out);
+  if (!entry.inputs.has(FrameInput::Materials)) {
+    for (auto& m : out.materials) m = Material{};
+    out.textures.clear();
+  }
+  return out;
 }
 
 bool referenceDependsOnKey(const ReferenceEntry& entry, const std::string& key, const TechniqueRegistry& techniques) {

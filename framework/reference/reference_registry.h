@@ -136,6 +136,11 @@ void registerBuiltinReferences(ReferenceRegistry& registry);
 // references, then every techniques/<id>/<id>_reference.cpp's registerReference_<id>().
 void registerAllReferences(ReferenceRegistry& registry);
 
+// The scene as the reference may see it: the lights and camera as `params` set them, and its
+// materials and textures only when the entry declares FrameInput::Materials (every material is
+// Material{} otherwise). What `rtlab reference` and the viewer's compare mode give a reference.
+Scene sceneForReference(const Scene& scene, const ParamSet& params, const ReferenceEntry& entry);
+
 // Whether the value of `key` is part of the reference's identity: one of its declared keys; for a
 // reference that reads the colour before post, also every key that can change that colour (all but
 // the keys of the measured stage and its techniques, of the post stage's techniques, and tonemap.*).

@@ -6,7 +6,6 @@
 // (ReferenceFrame::cancelled), so it ends within a moment and the destructor can join the worker.
 #include "viewer/reference_job.h"
 
-#include "scene/scene_params.h"
 #include "util/error.h"
 
 #include <atomic>
@@ -17,16 +16,6 @@
 #include <thread>
 
 namespace rtlab {
-
-Scene referenceJobScene(const Scene& scene, const ParamSet& params, const ReferenceEntry& entry) {
-  Scene out = scene;
-  applySceneParams(params, out);
-  if (!entry.inputs.has(FrameInput::Materials)) {
-    for (auto& m : out.materials) m = Material{};
-    out.textures.clear();
-  }
-  return out;
-}
 
 struct ReferenceJob::State {
   mutable std::mutex mutex;

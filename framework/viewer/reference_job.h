@@ -28,18 +28,13 @@ namespace rtlab {
 // Everything one computation reads: a copy, so the caller may change its state right after start().
 struct ReferenceJobInput {
   ReferenceEntry entry; // a copy of the registered entry (its compute function included)
-  Scene scene;          // as the reference may see it (referenceJobScene)
+  Scene scene;          // as the reference may see it (sceneForReference, reference/reference_registry.h)
   ParamSet params;      // the frame's parameters
   int spp = 1;          // entry.minSpp..entry.maxSpp
   unsigned seed = 1;
   std::optional<SurfaceData> surfaces; // when the entry declares FrameInput::SurfacePoints
   std::optional<Image> prePostColor;   // when the entry declares FrameInput::PrePostColor
 };
-
-// `scene` with the lights and camera as `params` set them, and without materials and textures
-// unless the entry declares FrameInput::Materials: what `rtlab reference` gives a reference
-// (app/reference_run.cpp).
-Scene referenceJobScene(const Scene& scene, const ParamSet& params, const ReferenceEntry& entry);
 
 struct ReferenceJobResult {
   Image image;

@@ -216,11 +216,11 @@ TEST(ReferenceJob, TheSceneHasTheParametersLightsAndCameraAndMaterialsOnlyWhenDe
   params.set("camera.fov", ParamValue::scalar(30.0));
   ReferenceEntry e;
   e.inputs = {FrameInput::PrePostColor};
-  const Scene plain = referenceJobScene(scene, params, e);
+  const Scene plain = sceneForReference(scene, params, e);
   EXPECT_EQ(plain.camera.fovY, 30.0f);
   EXPECT_EQ(plain.materials[0].baseColor, Material{}.baseColor);
   e.inputs = {FrameInput::PrePostColor, FrameInput::Materials};
-  EXPECT_EQ(referenceJobScene(scene, params, e).materials[0].baseColor, glm::vec4(0.2f));
+  EXPECT_EQ(sceneForReference(scene, params, e).materials[0].baseColor, glm::vec4(0.2f));
 }
 
 } // namespace

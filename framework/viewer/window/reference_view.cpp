@@ -210,7 +210,7 @@ void ReferenceView::restartProgressive(ViewerState& state, Renderer& renderer, u
 void ReferenceView::restartOneShot(ViewerState& state, Renderer& renderer, unsigned seed, const std::string& aov) {
   const ReferenceEntry& entry = ReferenceRegistry::instance().get(aov);
   state.reference.exact = !entry.samples();
-  ReferenceJobInput input{entry, referenceJobScene(state.scene, state.params, entry), state.params,
+  ReferenceJobInput input{entry, sceneForReference(state.scene, state.params, entry), state.params,
                           entry.defaultSpp, seed, std::nullopt, std::nullopt};
   if (entry.inputs.has(FrameInput::SurfacePoints)) input.surfaces = renderer.readSurfaces();
   if (entry.inputs.has(FrameInput::PrePostColor)) {
