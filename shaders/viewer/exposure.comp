@@ -5,6 +5,8 @@
 // definition and the CPU version `rtlab render --stats` uses). A loop per invocation, no shared
 // memory: on llvmpipe a 16x16 workgroup reducing through shared memory and barriers took as long
 // as the frame itself (docs/viewer.md "Exposure readout").
+#include "../common/hdr.glsl"
+
 layout(local_size_x = 64) in;
 
 layout(binding = 0) uniform sampler2D uColor;
@@ -25,7 +27,7 @@ void main() {
   for (int y = origin.y; y < end.y; ++y)
     for (int x = origin.x; x < end.x; ++x) {
       const vec3 c = texelFetch(uColor, ivec2(x, y), 0).rgb;
-      if (any(isnan(c)) || any(isinf(c))) {
+      if (nonFinite(c)) { // a bit test: isnan/isinf may fold away under fast math
         sum.w += 1.0;
       } else {
         const float l = max(dot(c, vec3(0.2126, 0.7152, 0.0722)), 0.0);
