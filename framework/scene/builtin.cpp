@@ -13,7 +13,7 @@ namespace rtlab {
 
 const std::vector<std::string>& builtinSceneNames() {
   static const std::vector<std::string> kNames = {"contact", "stacked", "cornell", "panes",
-                                                  "arealight", "glow"};
+                                                  "arealight", "glow", "layers"};
   return kNames;
 }
 
@@ -29,6 +29,7 @@ Scene makeBuiltinScene(const std::string& name) {
   if (name == "panes") return builtin::makePanes();
   if (name == "arealight") return builtin::makeAreaLight();
   if (name == "glow") return builtin::makeGlow();
+  if (name == "layers") return builtin::makeLayers();
   std::string list;
   for (const std::string& n : builtinSceneNames()) list += (list.empty() ? "" : ", ") + n;
   usageError("unknown scene '" + name + "'" + didYouMean(name, builtinSceneNames()) + " (built-in scenes: " + list + ")");

@@ -71,7 +71,7 @@ void expectConsistentMesh(const Mesh& m) {
 }
 
 TEST(SceneBuiltin, NamesInListOrder) {
-  EXPECT_EQ(builtinSceneNames(), (std::vector<std::string>{"contact", "stacked", "cornell", "panes", "arealight", "glow"}));
+  EXPECT_EQ(builtinSceneNames(), (std::vector<std::string>{"contact", "stacked", "cornell", "panes", "arealight", "glow", "layers"}));
   EXPECT_TRUE(isBuiltinScene("cornell"));
   EXPECT_FALSE(isBuiltinScene("Cornell"));
 }
@@ -199,6 +199,36 @@ TEST(SceneBuiltin, PanesHaveTransparentInstances) {
   EXPECT_FALSE(makeBuiltinScene("contact").hasTransparency());
 }
 
+// layers (docs/scene-format.md): what the transparency extremes need — 24 transparent layers whose
+// view depths span 0.1 to 500 (the range the WBOIT weights assume), a high-alpha layer in front of
+// low-alpha ones, two layers that cut through each other, and an opaque backdrop inside the far plane.
+TEST(SceneBuiltin, LayersSpanTheWeightsDepthRange) {
+  Scene s = makeBuiltinScene("layers");
+  auto depthOf = [&](const std::string& name) { return -instanceBounds(s, name).center().z; };
+  float nearest = 1e9f, farthest = 0.0f;
+  for (int k = 0; k < 24; ++k) {
+    const std::string name = std::string("stack_") + (k < 10 ? "0" : "") + std::to_string(k);
+    const Mesh* m = findMesh(s, name);
+    ASSERT_NE(m, nullptr) << name;
+    EXPECT_EQ(s.materials[static_cast<size_t>(m->material)].alphaMode, AlphaMode::Blend) << name;
+    nearest = std::min(nearest, depthOf(name));
+    farthest = std::max(farthest, depthOf(name));
+  }
+  EXPECT_NEAR(nearest, 0.1f, 1e-4f);
+  EXPECT_NEAR(farthest, 500.0f, 0.05f);
+  EXPECT_LT(s.camera.znear, nearest);
+  EXPECT_GT(s.camera.zfar, depthOf("backdrop"));
+  auto alphaOf = [&](const std::string& name) { return s.materials[size_t(findMesh(s, name)->material)].baseColor.w; };
+  EXPECT_GE(alphaOf("front_high"), 0.9f);
+  for (const char* back : {"back_low_0", "back_low_1", "back_low_2"}) {
+    EXPECT_LE(alphaOf(back), 0.2f);
+    EXPECT_GT(depthOf(back), depthOf("front_high"));
+  }
+  // The crossing pair: same centre, so each has parts in front of and behind the other.
+  EXPECT_NEAR(glm::length(instanceBounds(s, "cross_a").center() - instanceBounds(s, "cross_b").center()), 0.0f, 1e-4f);
+  EXPECT_FALSE(s.materials[size_t(findMesh(s, "backdrop")->material)].alphaMode == AlphaMode::Blend);
+}
+
 TEST(SceneBuiltin, AreaLightSceneHasARectLightAfterTheSpot) {
   Scene s = makeBuiltinScene("arealight");
   EXPECT_TRUE(s.hasAreaLight());
@@ -284,7 +314,7 @@ TEST(SceneLoad, BuiltinNamesAndUnknownNames) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::Usage);
     EXPECT_EQ(std::string(e.what()),
-              "unknown scene 'nosuchscene' (built-in scenes: contact, stacked, cornell, panes, arealight, glow)");
+              "unknown scene 'nosuchscene' (built-in scenes: contact, stacked, cornell, panes, arealight, glow, layers)");
   }
   for (const char* missing : {"/nonexistent/dir/x.gltf", "missing.GLB", "missing.glTF"}) {
     try {
