@@ -14,7 +14,8 @@ uniform float uStorageMax; // the accumulation format's largest finite value
 layout(location = 0) out vec4 oColor;
 
 #ifdef WBOIT_COUNT
-// [1]: pixels whose accumulation overflowed to infinity (on the frames that stats count).
+// [1]: pixels where a sum reached the format's largest value: +inf on hardware, 65504 where the
+// conversion saturates (llvmpipe) (on the frames that stats count).
 layout(std430, binding = 0) buffer WboitCounts {
   uint uWboitCounts[];
 };
@@ -39,10 +40,10 @@ void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec4 opaque = texelFetch(uColor, px, 0);
   // A sum that overflowed the format (more capped fragments than the guard allows) is read as the
-  // format's largest value, so the result stays finite (darker than the definition there).
+  // format's largest value, so the result stays finite (wrong there, and counted).
   vec4 stored = texelFetch(uAccum, px, 0);
 #ifdef WBOIT_COUNT
-  if (nonFinite(stored.rgb) || nonFinite(stored.aaa)) atomicAdd(uWboitCounts[1], 1u);
+  if (any(greaterThanEqual(stored, vec4(uStorageMax)))) atomicAdd(uWboitCounts[1], 1u);
 #endif
   vec4 accum = min(stored, vec4(uStorageMax)) / uAccumScale;
   float reveal = clamp(texelFetch(uReveal, px, 0).r, 0.0, 1.0);

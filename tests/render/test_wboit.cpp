@@ -348,6 +348,25 @@ TEST(Wboit, TwentyFourOpaqueLayersStayFinite) {
   }
 }
 
+// Beyond the guard: 80 layers of C = 60000, α = 1 each add the cap 65504/64 to the RGBA16F sums,
+// 80 x 1023.5 > 65504, so the colour sum saturates (65504 on llvmpipe, +inf on hardware; the
+// composite reads either as 65504). The result stays finite, is counted in every pixel, and is too
+// dark (65504 x 16 / Σ α w instead of 60000); RGBA32F has no such limit.
+TEST(Wboit, SumsBeyondTheGuardStayFiniteAndAreCounted) {
+  std::vector<Layer> layers;
+  for (int k = 0; k < 80; ++k) layers.push_back({0.5f + 0.02f * float(k), 1.0f, glm::vec3(60000.0f)});
+  WboitRenderer r(layerScene(layers, kBackdrop));
+  r.render({"wboit"}, {"transparency"}, true);
+  const Image got = r.renderer.readAov("transparency");
+  for (float v : got.pixels) ASSERT_TRUE(std::isfinite(v));
+  EXPECT_LT(got.at(kW / 2, kH / 2, 0), 0.9f * 60000.0f);
+  EXPECT_EQ(r.counter("overflowed_pixels"), double(kW * kH));
+  r.set("wboit.accum_format", "rgba32f");
+  r.render({"wboit"}, {"transparency"}, true);
+  EXPECT_EQ(r.counter("overflowed_pixels"), 0.0);
+  EXPECT_EQ(r.renderer.readAov("transparency").at(kW / 2, kH / 2, 0), 65504.0f); // the formula, HDR-clamped
+}
+
 // 100 layers at α = 0.001 over a black backdrop (C = 1): the revealage should be 0.999^100 =
 // 0.905 and the colour 1 - 0.905. R8 rounds 1 x 0.999 back to 1 (α < 1/510), so the layers
 // vanish: revealage exactly 1 and the opaque colour exactly (wrong, documented). R16F keeps them,
