@@ -82,7 +82,7 @@ public:
         ParamSpec::real("wboit.depth_scale", "Depth scale", 200.0, 10.0, 1000.0)
             .logScale().withUnit("scene units")
             .withHelp("eq9 and color9: s of 0.03/(1e-5 + (|z|/s)^exponent): the factor is 3e3 near the camera, "
-                      "half that at |z| = 0.056 s, 0.03 at |z| = s"),
+                      "half that at |z| = s 1e-5^(1/exponent) (0.056 s for exponent 4), 0.03 at |z| = s"),
         ParamSpec::real("wboit.exponent", "Exponent", 4.0, 1.0, 8.0)
             .withHelp("eq9 and color9: how steeply the weight falls with view depth"),
         ParamSpec::real("wboit.min_weight", "Minimum weight", 1e-2, 1e-3, 1e-1)
