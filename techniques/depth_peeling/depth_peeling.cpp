@@ -111,6 +111,14 @@ public:
     addComposite(frame, tail, blend);
   }
 
+  // A new scene (geometry set): the last count is about another scene, and the counter buffer goes,
+  // so that a scene where the stage does not run holds nothing of depth_peeling.
+  void sceneChanged(const SceneChange& change) override {
+    if (!change.geometry) return;
+    m_counts = gl::BufferObject();
+    m_countValid = false;
+  }
+
   std::size_t ownedBytes() const override { return m_counts ? sizeof(GLuint) : 0; }
 
   std::vector<TechniqueCounter> counters() const override {

@@ -9,12 +9,13 @@
 #include "scene/builtin_scenes.h"
 #include "scene/load.h"
 #include "scene/mesh_builder.h"
+#include "util/error.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
+#include <memory>
 
 namespace rtlab {
 namespace {
@@ -109,14 +110,31 @@ glm::dvec3 cpuOver(const std::vector<KnownLayer>& layers, int region, int count)
 // (relative step 2^-11 = 4.9e-4 each); the accumulation is RGBA32F. Four roundings at most.
 double fp16Tolerance(double value) { return 2e-3 * std::abs(value) + 1e-6; }
 
-// A renderer of its own (the counting frame needs FrameOutputs the shared fixture does not pass).
+// One renderer for the whole file (the counting frame and colour versions need FrameOutputs the
+// shared fixture does not pass): its program cache saves the shader JIT between tests and scenes.
+// Released by the test environment's tear-down, before the context goes.
+std::unique_ptr<Renderer>& sharedRenderer() {
+  static std::unique_ptr<Renderer> renderer;
+  return renderer;
+}
+class ReleaseSharedRenderer : public ::testing::Environment {
+  void TearDown() override { sharedRenderer().reset(); }
+};
+[[maybe_unused]] ::testing::Environment* const kRelease = ::testing::AddGlobalTestEnvironment(new ReleaseSharedRenderer);
+
+// The shared renderer with `scene` set and its default parameters.
 struct PeelRenderer {
-  Renderer renderer{TechniqueRegistry::instance()};
+  Renderer& renderer;
   ParamSet params;
-  explicit PeelRenderer(const Scene& scene) {
-    testContext().makeCurrent();
+  explicit PeelRenderer(const Scene& scene) : renderer(shared()) {
     renderer.setScene(scene);
     params = makeParamSet(scene, TechniqueRegistry::instance());
+  }
+  static Renderer& shared() {
+    testContext().makeCurrent();
+    auto& r = sharedRenderer();
+    if (!r) r = std::make_unique<Renderer>(TechniqueRegistry::instance());
+    return *r;
   }
   void set(const std::string& key, const std::string& value) { params.setText(key, value); }
   void render(const std::vector<std::string>& aovs, int w = kW, int h = kH, bool count = false,
@@ -132,10 +150,10 @@ struct PeelRenderer {
     renderer.render(params, w, h, outputs, timer);
     EXPECT_EQ(drainGlErrors(), 0);
   }
-  Image transparency(int layers, const std::string& tail = "drop") {
+  Image transparency(int layers, const std::string& tail = "drop", int w = kW, int h = kH) {
     set("depth_peeling.layers", std::to_string(layers));
     set("depth_peeling.tail", tail);
-    render({"transparency"});
+    render({"transparency"}, w, h);
     return renderer.readAov("transparency");
   }
   double counter(const std::string& name) const {
@@ -234,8 +252,10 @@ TEST(DepthPeeling, AllAlphaZeroGivesTheOpaqueImageExactly) {
 }
 
 // 24 layers of C = 1 (and of C = 60000, near the fp16 limit), alpha 1: finite, and the front layer
-// hides the others; the layer count reaches 24 with 24 layers peeled.
+// hides the others; the layer count reaches 24 with 24 layers peeled. 64x36: 24 full-frame layers
+// drawn 24 times (and again for the tail) are the slowest frames of this file.
 TEST(DepthPeeling, TwentyFourOpaqueLikeLayersStayFinite) {
+  constexpr int w = 64, h = 36;
   for (const float c : {1.0f, 60000.0f}) {
     std::vector<KnownLayer> layers;
     std::vector<int> order;
@@ -245,12 +265,12 @@ TEST(DepthPeeling, TwentyFourOpaqueLikeLayersStayFinite) {
     }
     PeelRenderer r(knownScene("dp_opaque24_" + std::to_string(int(c)), layers, order));
     for (const char* tail : {"drop", "blend"}) {
-      const Image img = r.transparency(24, tail);
+      const Image img = r.transparency(24, tail, w, h);
       for (float v : img.pixels) ASSERT_TRUE(std::isfinite(v)) << tail;
-      expectNear(pixel(img, kW - 2, kH / 2), glm::dvec3(c), tail);
+      expectNear(pixel(img, w - 2, h / 2), glm::dvec3(c), tail);
     }
-    r.render({"depth_peeling.layers"});
-    EXPECT_EQ(r.renderer.readAov("depth_peeling.layers").at(kW - 2, kH / 2, 0), 24.0f);
+    r.render({"depth_peeling.layers"}, w, h);
+    EXPECT_EQ(r.renderer.readAov("depth_peeling.layers").at(w - 2, h / 2, 0), 24.0f);
   }
 }
 
@@ -338,6 +358,23 @@ TEST(DepthPeeling, OpaqueOnlySceneHasNoPeelingPassOrResource) {
   for (const auto& p : r.renderer.lastPasses()) EXPECT_EQ(p.name.rfind("depth_peeling", 0), std::string::npos) << p.name;
   for (const auto& res : r.renderer.resources())
     EXPECT_EQ(res.name.rfind("depth_peeling", 0), std::string::npos) << res.name;
+}
+
+// A debug view asked for where the stage does not run is a usage error naming the stage, not a
+// frame graph without its producer (an internal error).
+TEST(DepthPeeling, DebugViewOnAnOpaqueSceneIsAUsageError) {
+  PeelRenderer r(loadScene("contact"));
+  testContext().makeCurrent();
+  r.renderer.setTechniques({"depth_peeling"});
+  try {
+    r.renderer.checkAov("depth_peeling.layers");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::Usage);
+    EXPECT_NE(std::string(e.what()).find("transparency"), std::string::npos) << e.what();
+  }
+  r.renderer.setScene(loadScene("panes"));
+  EXPECT_NO_THROW(r.renderer.checkAov("depth_peeling.layers"));
 }
 
 // One geometry pass per layer (named depth_peeling.layer<k> in stats), two depth targets whatever
