@@ -5,10 +5,9 @@
 #include "frame/param_catalog.h"
 #include "frame/registry.h"
 #include "gl/debug.h"
+#include "known_layers.h"
 #include "render_fixture.h"
-#include "scene/builtin_scenes.h"
 #include "scene/load.h"
-#include "scene/mesh_builder.h"
 #include "util/error.h"
 
 #include <gtest/gtest.h>
@@ -20,90 +19,48 @@
 namespace rtlab {
 namespace {
 
-using builtin::SceneBuilder;
-
-// The camera of the known scenes: at the origin looking along -z, fov 50, 16:9 frames.
-constexpr float kFovY = 50.0f;
 constexpr int kW = 160, kH = 90;
-const float kHalfH = std::tan(glm::radians(kFovY * 0.5f));
-const float kHalfW = kHalfH * 16.0f / 9.0f;
-
-// A known layer: camera-facing quad at view depth `z` over NDC x in [x0, 1.2] (past the right edge)
-// and y in [-0.8, 0.8]; black base colour and no light, so its radiance C is its emission exactly.
-struct KnownLayer {
-  float z;
-  float x0;
-  float alpha;
-  glm::vec3 emission;
-};
-
 const glm::vec3 kOpaque(0.2f, 0.3f, 0.4f); // the backdrop's emission: C_opaque
 
-Material blackMaterial(const std::string& name, const glm::vec3& emission) {
-  Material m = builtin::diffuseMaterial(name, glm::vec3(0.0f), 1.0f);
-  m.emissive = emission;
-  return m;
-}
-
-// The scene: an opaque black backdrop emitting kOpaque at depth 50 over the whole view, the layers
-// added in `order`, one directional light of intensity 0 and no ambient. Every layer's mesh gets the
-// same bounds, so SceneGpu's back-to-front sort (by distance to the bounds' centre) ties and the
-// layers are drawn in the scene's instance order: `order` is then the draw order.
-Scene knownScene(const std::string& name, const std::vector<KnownLayer>& layers, const std::vector<int>& order) {
-  SceneBuilder b(name);
-  const int backdrop = b.addMaterial(blackMaterial("backdrop", kOpaque));
-  const float zb = 50.0f;
-  b.addObject(makeQuad("backdrop", {0, 0, -zb}, {1.2f * kHalfW * zb, 0, 0}, {0, 1.2f * kHalfH * zb, 0}), backdrop);
+// A known-layers scene (known_layers.h) whose layers are drawn in the order given. SceneGpu sorts
+// transparent instances back to front by the distance of their bounds' centre from the eye, so
+// shuffling the instances alone would not change the draw order; every layer's mesh gets the same
+// bounds here, the sort ties, and its stable order is the scene's instance order.
+Scene knownScene(const std::string& name, const std::vector<KnownLayer>& layers) {
+  Scene s = makeKnownLayersScene(name, layers, kOpaque, float(kW) / float(kH));
   Bounds common;
   common.extend({-20, -20, -30});
   common.extend({20, 20, 0});
-  for (int i : order) {
-    const KnownLayer& l = layers[std::size_t(i)];
-    Material m = blackMaterial("layer_" + std::to_string(i), l.emission);
-    m.baseColor.w = l.alpha;
-    m.alphaMode = AlphaMode::Blend;
-    m.doubleSided = true;
-    const int mat = b.addMaterial(m);
-    const float x1 = 1.2f;
-    Mesh q = makeQuad("layer_" + std::to_string(i), {0.5f * (l.x0 + x1) * kHalfW * l.z, 0, -l.z},
-                      {0.5f * (x1 - l.x0) * kHalfW * l.z, 0, 0}, {0, 0.8f * kHalfH * l.z, 0});
-    q.bounds = common;
-    b.addObject(std::move(q), mat);
-  }
-  b.addLight(builtin::directionalLight("off", {0, 0, -1}, 0.0f, 0.5f));
-  Scene s = b.finish(builtin::camera({0, 0, 0}, {0, 0, -1}, kFovY));
-  s.camera.znear = 0.5f;
-  s.camera.zfar = 100.0f;
-  s.ambient = glm::vec3(0.0f);
+  for (const auto& inst : s.instances)
+    if (inst.transparent) s.meshes[std::size_t(inst.mesh)].bounds = common;
   return s;
 }
 
 // Four layers at depths 2..5, nested so that NDC x in [-0.9 + 0.45 i, -0.45 + 0.45 i] is covered by
 // layers 0..i: depth complexity 1 to 4 from left to right. HDR emissions, alphas from 0.3 to 0.8.
 std::vector<KnownLayer> fourLayers() {
-  return {{2.0f, -0.9f, 0.3f, {3.0f, 0.5f, 0.1f}},
-          {3.0f, -0.45f, 0.6f, {0.1f, 2.0f, 0.3f}},
-          {4.0f, 0.0f, 0.45f, {0.2f, 0.1f, 5.0f}},
-          {5.0f, 0.45f, 0.8f, {1.0f, 1.0f, 0.2f}}};
+  auto layer = [](float depth, float x0, glm::vec3 emission, float alpha) {
+    return KnownLayer{depth, {x0, -0.8f}, {1.2f, 0.8f}, emission, alpha};
+  };
+  return {layer(2.0f, -0.9f, {3.0f, 0.5f, 0.1f}, 0.3f), layer(3.0f, -0.45f, {0.1f, 2.0f, 0.3f}, 0.6f),
+          layer(4.0f, 0.0f, {0.2f, 0.1f, 5.0f}, 0.45f), layer(5.0f, 0.45f, {1.0f, 1.0f, 0.2f}, 0.8f)};
 }
 
-// The pixel (row y = the middle) at the centre of the region covered by layers 0..region.
-int regionPixelX(int region) {
-  const float ndc = -0.9f + 0.45f * float(region) + 0.225f;
-  return int((ndc * 0.5f + 0.5f) * float(kW));
+std::vector<KnownLayer> inOrder(const std::vector<KnownLayer>& layers, const std::vector<int>& order) {
+  std::vector<KnownLayer> out;
+  for (int i : order) out.push_back(layers[std::size_t(i)]);
+  return out;
 }
 
-// Exact Over, in double precision, of the front-most `count` layers (sorted by depth) covering
-// region `region`, onto kOpaque.
+// The centre of the region covered by layers 0..region (NDC), and its pixel.
+glm::vec2 regionNdc(int region) { return {-0.9f + 0.45f * float(region) + 0.225f, 0.0f}; }
+glm::ivec2 regionPixel(int region) { return pixelAt(regionNdc(region), kW, kH); }
+
+// Exact Over (known_layers.h exactOver, double precision) at region `region` of the front-most
+// `count` layers covering it.
 glm::dvec3 cpuOver(const std::vector<KnownLayer>& layers, int region, int count) {
-  std::vector<KnownLayer> covering;
-  for (int i = 0; i <= region; ++i) covering.push_back(layers[std::size_t(i)]);
-  std::sort(covering.begin(), covering.end(), [](const KnownLayer& a, const KnownLayer& b) { return a.z < b.z; });
-  covering.resize(std::min<std::size_t>(covering.size(), std::size_t(count)));
-  glm::dvec3 r(kOpaque);
-  for (auto it = covering.rbegin(); it != covering.rend(); ++it)
-    r = double(it->alpha) * glm::dvec3(it->emission) + (1.0 - double(it->alpha)) * r;
-  return r;
+  std::vector<KnownLayer> front(layers.begin(), layers.begin() + std::min(region + 1, count));
+  return exactOver(front, kOpaque, regionNdc(region));
 }
 
 // fp16 rounding: the opaque colour, each layer's a*C and the output are stored in RGBA16F
@@ -183,14 +140,14 @@ double rmse(const Image& a, const Image& b) {
 // (1..4 across the regions) and nothing left behind.
 TEST(DepthPeeling, EnoughLayersGiveExactOver) {
   const auto layers = fourLayers();
-  PeelRenderer r(knownScene("dp_known", layers, {0, 1, 2, 3}));
+  PeelRenderer r(knownScene("dp_known", layers));
   for (const int count : {4, 64}) {
     const Image img = r.transparency(count);
     r.render({"depth_peeling.layers", "depth_peeling.remaining"});
     const Image peeled = r.renderer.readAov("depth_peeling.layers");
     const Image remaining = r.renderer.readAov("depth_peeling.remaining");
     for (int region = 0; region < 4; ++region) {
-      const int x = regionPixelX(region), y = kH / 2;
+      const auto [x, y] = regionPixel(region);
       expectNear(pixel(img, x, y), cpuOver(layers, region, 4), "layers " + std::to_string(count) + " region " + std::to_string(region));
       EXPECT_EQ(peeled.at(x, y, 0), float(region + 1)) << region;
       EXPECT_EQ(remaining.at(x, y, 0), 0.0f) << region;
@@ -202,10 +159,10 @@ TEST(DepthPeeling, EnoughLayersGiveExactOver) {
 // result; where one layer covers the pixel it is exact.
 TEST(DepthPeeling, OneLayerKeepsOnlyTheFrontLayer) {
   const auto layers = fourLayers();
-  PeelRenderer r(knownScene("dp_known", layers, {0, 1, 2, 3}));
+  PeelRenderer r(knownScene("dp_known", layers));
   const Image img = r.transparency(1);
   for (int region = 0; region < 4; ++region) {
-    const int x = regionPixelX(region), y = kH / 2;
+    const auto [x, y] = regionPixel(region);
     const glm::dvec3 got = pixel(img, x, y);
     expectNear(got, cpuOver(layers, region, 1), "region " + std::to_string(region));
     if (region == 0) continue;
@@ -225,7 +182,7 @@ TEST(DepthPeeling, DrawOrderDoesNotMatter) {
   for (const char* tail : {"drop", "blend"}) {
     std::vector<Image> images;
     for (std::size_t o = 0; o < orders.size(); ++o) {
-      PeelRenderer r(knownScene("dp_order" + std::to_string(o), layers, orders[o]));
+      PeelRenderer r(knownScene("dp_order" + std::to_string(o), inOrder(layers, orders[o])));
       images.push_back(r.transparency(std::string(tail) == "drop" ? 4 : 1, tail));
     }
     for (std::size_t o = 1; o < images.size(); ++o)
@@ -258,12 +215,8 @@ TEST(DepthPeeling, TwentyFourOpaqueLikeLayersStayFinite) {
   constexpr int w = 64, h = 36;
   for (const float c : {1.0f, 60000.0f}) {
     std::vector<KnownLayer> layers;
-    std::vector<int> order;
-    for (int i = 0; i < 24; ++i) {
-      layers.push_back({1.0f + 0.25f * float(i), -0.9f, 1.0f, glm::vec3(c)});
-      order.push_back(i);
-    }
-    PeelRenderer r(knownScene("dp_opaque24_" + std::to_string(int(c)), layers, order));
+    for (int i = 0; i < 24; ++i) layers.push_back({1.0f + 0.25f * float(i), {-0.9f, -0.8f}, {1.2f, 0.8f}, glm::vec3(c), 1.0f});
+    PeelRenderer r(knownScene("dp_opaque24_" + std::to_string(int(c)), layers));
     for (const char* tail : {"drop", "blend"}) {
       const Image img = r.transparency(24, tail, w, h);
       for (float v : img.pixels) ASSERT_TRUE(std::isfinite(v)) << tail;
@@ -306,7 +259,7 @@ TEST(DepthPeeling, TailBlendIsCloserThanDropWithFewLayers) {
 // pass does (only the views are). Dropped with tail=drop, none dropped with tail=blend.
 TEST(DepthPeeling, RemainingFragmentsAreCountedAndShown) {
   const auto layers = fourLayers();
-  PeelRenderer r(knownScene("dp_known", layers, {0, 1, 2, 3}));
+  PeelRenderer r(knownScene("dp_known", layers));
   r.set("depth_peeling.layers", "2");
   for (const char* tail : {"drop", "blend"}) {
     r.set("depth_peeling.tail", tail);
@@ -317,7 +270,7 @@ TEST(DepthPeeling, RemainingFragmentsAreCountedAndShown) {
       const Image remaining = r.renderer.readAov("depth_peeling.remaining");
       const Image peeled = r.renderer.readAov("depth_peeling.layers");
       for (int region = 0; region < 4; ++region) {
-        const int x = regionPixelX(region), y = kH / 2;
+        const auto [x, y] = regionPixel(region);
         EXPECT_EQ(remaining.at(x, y, 0), float(std::max(0, region - 1))) << region;
         EXPECT_EQ(peeled.at(x, y, 0), float(std::min(2, region + 1))) << region;
       }
@@ -337,14 +290,14 @@ TEST(DepthPeeling, RemainingFragmentsAreCountedAndShown) {
 // first drawn, the next layer discards both (at the previous depth). The pixel is the Over of one
 // of them, never both; which one depends on the draw order (README "Coplanar layers").
 TEST(DepthPeeling, CoplanarLayersArePeeledOnce) {
-  const std::vector<KnownLayer> layers = {{3.0f, -0.9f, 0.5f, {4.0f, 0.0f, 0.0f}}, {3.0f, -0.9f, 0.5f, {0.0f, 4.0f, 0.0f}}};
+  const std::vector<KnownLayer> layers = {{3.0f, {-0.9f, -0.8f}, {1.2f, 0.8f}, {4.0f, 0.0f, 0.0f}, 0.5f},
+                                          {3.0f, {-0.9f, -0.8f}, {1.2f, 0.8f}, {0.0f, 4.0f, 0.0f}, 0.5f}};
   for (const auto& order : std::vector<std::vector<int>>{{0, 1}, {1, 0}}) {
-    PeelRenderer r(knownScene("dp_coplanar" + std::to_string(order[0]), layers, order));
+    PeelRenderer r(knownScene("dp_coplanar" + std::to_string(order[0]), inOrder(layers, order)));
     const Image img = r.transparency(8);
     const glm::dvec3 got = pixel(img, kW / 2, kH / 2);
     const KnownLayer& first = layers[std::size_t(order[0])];
-    expectNear(got, double(first.alpha) * glm::dvec3(first.emission) + (1.0 - first.alpha) * glm::dvec3(kOpaque),
-               "first drawn " + std::to_string(order[0]));
+    expectNear(got, exactOver({first}, kOpaque, {0.0f, 0.0f}), "first drawn " + std::to_string(order[0]));
     r.render({"depth_peeling.layers"});
     EXPECT_EQ(r.renderer.readAov("depth_peeling.layers").at(kW / 2, kH / 2, 0), 1.0f);
   }
