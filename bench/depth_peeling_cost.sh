@@ -5,7 +5,7 @@
 # one table row per run: the median ms of the frame, of a layer pass (mean over the layers), of an
 # under pass, of the tail and of the composite, and the technique's pool memory (depth_peeling.*
 # resources). Not a test; on llvmpipe about half an hour on two cores.
-# Usage: bash bench/depth_peeling_cost.sh [path/to/rtlab] [OUTDIR]
+# Usage: bash bench/depth_peeling_cost.sh [path/to/rtlab] [OUTDIR] (runs already in OUTDIR are kept)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rtlab=$(realpath "${1:-build/rtlab}")
@@ -14,9 +14,10 @@ dir=${2:-$(mktemp -d)}
 mkdir -p "$dir"
 for scene in panes layers; do
   for run in 1:drop 2:drop 4:drop 8:drop 16:drop 24:drop 32:drop 2:blend 8:blend; do
-    n=${run%%:*} tail=${run##*:}
+    n=${run%%:*} tail=${run##*:} name=$dir/${scene}_${n}_${tail}
+    [ -f "$name.json" ] && continue # an earlier run of the script measured it (resume)
     "$rtlab" render --scene $scene -t depth_peeling --set depth_peeling.layers=$n --set depth_peeling.tail=$tail \
-      --size 1280x720 --frames 5 --stats "$dir/${scene}_${n}_${tail}.json" --out "$dir/${scene}_${n}_${tail}.png" 2>/dev/null
+      --size 1280x720 --frames 5 --stats "$name.json" --out "$name.png" 2>"$name.log"
   done
 done
 /usr/bin/python3 - "$dir" <<'EOF'
