@@ -14,7 +14,7 @@ namespace {
 // The default framebuffer is never drawn to (rtlab renders into its own FBOs); it only has to exist.
 constexpr int kBufferSize = 16;
 
-[[noreturn]] void fail(const std::string& what) { throw Error(ExitCode::NoContext, what); }
+[[noreturn]] void osmesaFail(const std::string& what) { throw Error(ExitCode::NoContext, what); }
 
 void (*osmesaProc(const char* name))() {
   return reinterpret_cast<void (*)()>(OSMesaGetProcAddress(name));
@@ -31,7 +31,7 @@ public:
 
   void makeCurrent() override {
     if (!OSMesaMakeCurrent(m_context, m_buffer.data(), GL_UNSIGNED_BYTE, kBufferSize, kBufferSize))
-      fail("OSMesaMakeCurrent failed");
+      osmesaFail("OSMesaMakeCurrent failed");
   }
 
   void init() {
@@ -44,7 +44,7 @@ public:
                            OSMESA_CONTEXT_MINOR_VERSION, 5,
                            0};
     m_context = OSMesaCreateContextAttribs(attribs, nullptr);
-    if (!m_context) fail("OSMesaCreateContextAttribs(OpenGL 4.5 core) failed");
+    if (!m_context) osmesaFail("OSMesaCreateContextAttribs(OpenGL 4.5 core) failed");
     makeCurrent();
     loadGl(&osmesaProc, "osmesa");
   }

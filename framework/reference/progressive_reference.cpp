@@ -24,7 +24,9 @@
 
 namespace rtlab {
 
-namespace {
+// A named namespace, not an anonymous one: ProgressiveReference::State (external linkage) holds a
+// Job, which GCC warns about (-Wsubobject-linkage) when a unity build batches this file.
+namespace progressive_job {
 
 struct Job {
   std::uint64_t generation = 0;
@@ -38,7 +40,9 @@ struct Job {
   int threads = 1;
 };
 
-} // namespace
+} // namespace progressive_job
+
+using progressive_job::Job;
 
 struct ProgressiveReference::State {
   mutable std::mutex mutex;

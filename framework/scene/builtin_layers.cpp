@@ -44,7 +44,7 @@ glm::vec3 hue(int k, int n) {
 
 } // namespace
 
-// layers (camera at the origin looking along -z, fov 50, near 0.07, far 600):
+// layers (camera at the origin looking along -z, fov 50):
 // - "stack_00" ... "stack_23" on the left: layer k at view depth 0.1 * 5000^(k/23) (0.1 to 500),
 //   alpha 0.15, 0.25 or 0.35 in turn, covering NDC x in [-0.95 + 0.025k, 0.2] and y in
 //   [-0.9, 0.9 - 0.05k], so the depth complexity grows from 1 at the top left to 24 at the bottom
@@ -98,10 +98,7 @@ Scene makeLayers() {
 
   b.addLight(directionalLight("key", {0.2f, -0.3f, -1.0f}, 3.0f, 0.5f));
   Scene scene = b.finish(camera({0, 0, 0}, {0, 0, -1.0f}, kFovY));
-  // Fixed rather than fitted, so the layer at 0.1 and the backdrop at 550 are both in view whatever
-  // the fit does (far / near stays within the 1e4 of docs/scene-format.md).
-  scene.camera.znear = 0.07f;
-  scene.camera.zfar = 600.0f;
+  // The clip planes are fitted to the bounds (far / near = 1e4: near about 0.09, far about 870).
   scene.ambient = glm::vec3(0.05f);
   return scene;
 }

@@ -51,10 +51,11 @@ std::string keyHash(const ReferenceEntry& e, const ParamSet& params, const Techn
 
 } // namespace
 
-TEST(ReferenceRegistry, ListsTheThreeBuiltinsWithTheirStagesAndKeys) {
+// The three of the Embree ray caster, and the transparency stage's (which belongs to no technique).
+TEST(ReferenceRegistry, ListsTheBuiltinsWithTheirStagesAndKeys) {
   const ReferenceRegistry r = builtins();
-  ASSERT_EQ(r.entries().size(), 3u);
-  EXPECT_EQ(r.choices(), "visibility, ao, indirect");
+  ASSERT_EQ(r.entries().size(), 4u);
+  EXPECT_EQ(r.choices(), "visibility, ao, indirect, transparency");
   const Strings lightCamera = {"light<N>.", "camera."};
   const Strings withRadius = {"light<N>.", "camera.", "ao.radius"};
   EXPECT_EQ(r.get("visibility").stage, "shadow");
@@ -64,7 +65,15 @@ TEST(ReferenceRegistry, ListsTheThreeBuiltinsWithTheirStagesAndKeys) {
   EXPECT_EQ(r.get("indirect").stage, "indirect");
   EXPECT_EQ(r.get("indirect").keys, lightCamera);
   EXPECT_EQ(r.get("indirect").channels, 3);
+  const ReferenceEntry& transparency = r.get("transparency");
+  EXPECT_EQ(transparency.stage, "transparency");
+  EXPECT_EQ(transparency.keys, lightCamera);
+  EXPECT_EQ(transparency.channels, 3);
+  EXPECT_TRUE(transparency.inputs.has(FrameInput::TransparentFragments));
+  EXPECT_FALSE(transparency.inputs.has(FrameInput::SurfacePoints));
+  EXPECT_FALSE(transparency.samples());
   for (const auto& e : r.entries()) {
+    if (&e == &transparency) continue;
     SCOPED_TRACE(e.aov);
     EXPECT_EQ(r.findStage(e.stage), &e);
     EXPECT_TRUE(e.inputs.has(FrameInput::SurfacePoints));
@@ -130,6 +139,12 @@ TEST(ReferenceRegistry, ColourBeforePostDependsOnEveryKeyBeforePost) {
   const ReferenceEntry plain = testEntry("plainref", "post", {"bl.sigma"});
   EXPECT_FALSE(referenceDependsOnKey(plain, "light0.radius", techniques));
   EXPECT_FALSE(referenceDependsOnKey(plain, "tq.samples", techniques));
+  // The opaque colour under the transparent fragments: the same rule, for the transparency stage.
+  const ReferenceEntry over = testEntry("overref", "transparency", {"light<N>."}, {FrameInput::TransparentFragments});
+  EXPECT_TRUE(referenceDependsOnKey(over, "shadow.resolution", techniques));
+  EXPECT_TRUE(referenceDependsOnKey(over, "tq.samples", techniques));
+  EXPECT_FALSE(referenceDependsOnKey(over, "bx.gain", techniques));
+  EXPECT_FALSE(referenceDependsOnKey(over, "tonemap.exposure", techniques));
 }
 
 TEST(ReferenceRegistry, UnknownAovIsAUsageErrorNamingTheChoices) {
@@ -152,9 +167,9 @@ TEST(ReferenceRegistry, RefusesInconsistentRegistrations) {
   badSpp.maxSpp = 16;
   badSpp.defaultSpp = 32;
   EXPECT_RTLAB_ERROR(r.add(badSpp), ExitCode::Internal, "minSpp <= defaultSpp <= maxSpp");
-  EXPECT_EQ(r.entries().size(), 3u);
+  EXPECT_EQ(r.entries().size(), 4u);
   r.add(testEntry("other", "post", {"bl.sigma"}, {FrameInput::PrePostColor}));
-  EXPECT_EQ(r.choices("|"), "visibility|ao|indirect|other");
+  EXPECT_EQ(r.choices("|"), "visibility|ao|indirect|transparency|other");
 }
 
 TEST(ReferenceRegistry, AReferenceReadsOnlyWhatItDeclares) {

@@ -21,7 +21,7 @@ namespace {
 
 using rtlab::test::fakeTechnique;
 
-const TechniqueRegistry& registry() {
+const TechniqueRegistry& actionsRegistry() {
   static const TechniqueRegistry r = [] {
     TechniqueRegistry t;
     t.add(fakeTechnique("hard", "shadow", {ParamSpec::integer("hard.samples", "Samples", 16, 1, 64)},
@@ -36,10 +36,10 @@ const TechniqueRegistry& registry() {
 }
 
 ViewerState contactState() {
-  ViewerState s(registry());
+  ViewerState s(actionsRegistry());
   s.sceneSpec = "contact";
   s.scene = makeBuiltinScene("contact");
-  s.params = makeParamSet(s.scene, registry());
+  s.params = makeParamSet(s.scene, actionsRegistry());
   s.camera.setHome(s.scene.camera);
   syncCameraFromParams(s);
   return s;

@@ -36,7 +36,7 @@ Caught parseSecond(const std::string& action) {
 
 using rtlab::test::fakeTechnique;
 
-TechniqueRegistry registry() {
+TechniqueRegistry scriptRegistry() {
   TechniqueRegistry r;
   r.add(
       fakeTechnique("sh", "shadow", {ParamSpec::integer("sh.samples", "Samples", 16, 1, 64)}, {{"sh.kernel", 1, ""}}));
@@ -56,7 +56,7 @@ ParamSet params(const TechniqueRegistry& r) {
 
 Caught validate(const std::string& text) {
   return catchError([&] {
-    const TechniqueRegistry r = registry();
+    const TechniqueRegistry r = scriptRegistry();
     validateScript(parseScript(text, "demo.json"), params(r), r);
   });
 }
@@ -256,7 +256,7 @@ TEST(ViewerScript, ValidationNamesTheActionForUnknownKeysAndBadValues) {
 }
 
 TEST(ViewerScript, ValidationWorksOnACopyOfTheParameters) {
-  const TechniqueRegistry r = registry();
+  const TechniqueRegistry r = scriptRegistry();
   const ParamSet p = params(r);
   validateScript(parseScript(R"([{"action": "set", "key": "sh.samples", "value": 2}])", "demo.json"), p, r);
   EXPECT_EQ(p.getInt("sh.samples"), 16);
@@ -300,7 +300,7 @@ TEST(ViewerScript, ActionsBuiltInCodeAreCheckedToo) {
   a.args = {{"key", "sh.samples"}}; // no "value"
   checkCaught(catchError([&] { checkScriptAction(a); }), ExitCode::Input,
               {"script 'viewer' action 4 (\"set\")", "\"value\""});
-  const TechniqueRegistry r = registry();
+  const TechniqueRegistry r = scriptRegistry();
   checkCaught(catchError([&] { validateScript({a}, params(r), r); }), ExitCode::Input, {"missing field \"value\""});
   a.args["value"] = 8;
   EXPECT_FALSE(catchError([&] { validateScript({a}, params(r), r); }).thrown);
