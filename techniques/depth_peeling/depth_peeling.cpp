@@ -19,7 +19,9 @@
 #include "shading/scene_gpu.h"
 
 namespace rtlab {
-namespace {
+// Named, not anonymous: the technique sources are compiled in unity batches, where another file's
+// anonymous namespace (bloom's kCounts) would be the same one.
+namespace depth_peeling {
 
 // Two depth targets, layer k writing kDepth[k % 2] while sampling the other (ping-pong).
 constexpr const char* kDepthTargets[2] = {"depth_peeling.depth0", "depth_peeling.depth1"};
@@ -325,8 +327,10 @@ private:
   bool m_blend = false;
 };
 
-} // namespace
+} // namespace depth_peeling
 
-void registerTechnique_depth_peeling(TechniqueRegistry& registry) { registerTechniqueType<DepthPeeling>(registry); }
+void registerTechnique_depth_peeling(TechniqueRegistry& registry) {
+  registerTechniqueType<depth_peeling::DepthPeeling>(registry);
+}
 
 } // namespace rtlab
