@@ -65,6 +65,16 @@ bool Renderer::stageHasTechnique(const StageInfo& stage) const {
 
 void Renderer::checkAov(const std::string& aov) const {
   checkAovName(aov, m_order, m_registry);
+  // A debug view exists only where its technique runs: on a scene its stage does not apply to
+  // (transparency without a transparent material), the technique adds no pass.
+  for (const auto& id : m_order) {
+    const TechniqueInfo& info = m_registry.get(id).info;
+    const StageInfo* owner = findStage(info.stage);
+    for (const auto& view : info.debugViews)
+      if (view.name == aov && owner && m_sceneGpu && !owner->appliesTo(m_scene))
+        usageError("AOV '" + aov + "' is a debug view of '" + id + "', whose stage '" + owner->id +
+                   "' does not run on scene '" + m_scene.name + "' (predicate " + predicateName(owner->predicate) + " is false)");
+  }
   // A technique-resource AOV (arealight) exists only where its stage's technique computes it: on a
   // scene the stage applies to, without such a technique, the frame holds no value for it (the
   // lighting pass's point approximation of rectangles is in the colour instead).
