@@ -1,0 +1,37 @@
+// One A-buffer node (techniques/abuffer/README.md "Memory"): 16 bytes in the storage buffer of
+// nodes (binding 0), a uvec4 of
+//   x: the index of the next node of the same pixel's list (kEndOfList ends it),
+//   y: the fragment's window depth gl_FragCoord.z as float bits,
+//   z: packHalf2x16(a*C.r, a*C.g), w: packHalf2x16(a*C.b, a): the premultiplied colour and the
+//      coverage in 16-bit floats (a*C <= 65504 since C is clamped there and a <= 1).
+// The head of each pixel's list is in an r32ui image (kEndOfList: empty).
+const uint kEndOfList = 0xffffffffu;
+
+struct Fragment {
+  float depth;       // window depth in [0, 1], smaller is nearer
+  vec4 premultiplied; // (a*C, a)
+  uvec2 colorBits;   // the packed colour, the tie-break of equal depths (abufferInFront)
+};
+
+uvec4 abufferPackNode(uint next, float depth, vec3 premultipliedColor, float alpha) {
+  return uvec4(next, floatBitsToUint(depth), packHalf2x16(premultipliedColor.rg),
+               packHalf2x16(vec2(premultipliedColor.b, alpha)));
+}
+
+Fragment abufferUnpackNode(uvec4 node) {
+  Fragment f;
+  f.depth = uintBitsToFloat(node.y);
+  f.premultiplied = vec4(unpackHalf2x16(node.z), unpackHalf2x16(node.w));
+  f.colorBits = node.zw;
+  return f;
+}
+
+// True when a is composited in front of b: the nearer depth first; equal depths (coplanar layers)
+// by their packed colour bits, smaller first, so that the result depends on the fragments only and
+// never on the order the GPU appended them in (two fragments equal in depth and colour are
+// interchangeable).
+bool abufferInFront(Fragment a, Fragment b) {
+  if (a.depth != b.depth) return a.depth < b.depth;
+  if (a.colorBits.x != b.colorBits.x) return a.colorBits.x < b.colorBits.x;
+  return a.colorBits.y < b.colorBits.y;
+}
