@@ -7,31 +7,19 @@
 // The head of each pixel's list is in an r32ui image (kEndOfList: empty).
 const uint kEndOfList = 0xffffffffu;
 
-struct Fragment {
-  float depth;       // window depth in [0, 1], smaller is nearer
-  vec4 premultiplied; // (a*C, a)
-  uvec2 colorBits;   // the packed colour, the tie-break of equal depths (abufferInFront)
-};
-
 uvec4 abufferPackNode(uint next, float depth, vec3 premultipliedColor, float alpha) {
   return uvec4(next, floatBitsToUint(depth), packHalf2x16(premultipliedColor.rg),
                packHalf2x16(vec2(premultipliedColor.b, alpha)));
 }
 
-Fragment abufferUnpackNode(uvec4 node) {
-  Fragment f;
-  f.depth = uintBitsToFloat(node.y);
-  f.premultiplied = vec4(unpackHalf2x16(node.z), unpackHalf2x16(node.w));
-  f.colorBits = node.zw;
-  return f;
-}
+// The node's premultiplied colour and coverage (a*C, a).
+vec4 abufferPremultiplied(uvec4 node) { return vec4(unpackHalf2x16(node.z), unpackHalf2x16(node.w)); }
 
-// True when a is composited in front of b: the nearer depth first; equal depths (coplanar layers)
-// by their packed colour bits, smaller first, so that the result depends on the fragments only and
-// never on the order the GPU appended them in (two fragments equal in depth and colour are
-// interchangeable).
-bool abufferInFront(Fragment a, Fragment b) {
-  if (a.depth != b.depth) return a.depth < b.depth;
-  if (a.colorBits.x != b.colorBits.x) return a.colorBits.x < b.colorBits.x;
-  return a.colorBits.y < b.colorBits.y;
+// True when node a is composited in front of node b: the nearer depth first; equal depths
+// (coplanar layers) by their packed colour bits, smaller first, so that the result depends on the
+// fragments only, never on the order the GPU appended them in (two fragments equal in depth and
+// colour are interchangeable). Window depths lie in [0, 1], where the order of the float bits as
+// unsigned integers is the order of the depths.
+bool abufferInFront(uvec4 a, uvec4 b) {
+  return a.y < b.y || (a.y == b.y && (a.z < b.z || (a.z == b.z && a.w < b.w)));
 }

@@ -19,7 +19,7 @@
 namespace rtlab {
 namespace {
 
-constexpr int kHeadsUnit = 0, kCountsUnit = 1;      // image units (build.frag, resolve.frag)
+constexpr int kHeadsUnit = 0, kCountsUnit = 1, kOutputUnit = 2; // image units (build.frag, resolve.comp)
 constexpr int kNodesBinding = 0, kStatsBinding = 1; // storage buffers
 constexpr int kCounterBinding = 0;                  // atomic counter
 constexpr GLuint kEnd = GLuint(abuffer::kEndOfList);
@@ -99,7 +99,7 @@ void AbufferPasses::add(FrameGraph& frame, const AbufferSetup& setup) {
         [&](PassBuilder& b) {
           b.read(setup.colorIn);
           b.read(res::kDepth);
-          b.write(setup.colorOut, frameTexture(frame, GL_RGBA16F));
+          b.writeImage(setup.colorOut, frameTexture(frame, GL_RGBA16F), kOutputUnit);
           b.readWriteImage(heads, kHeadsUnit);
           b.writeImage(counts, uintDesc, kCountsUnit);
           b.readWriteBuffer(pool, BufferBinding::Storage, kNodesBinding);
@@ -224,24 +224,23 @@ std::uint64_t AbufferPasses::buildRect(const PassContext& ctx, const abuffer::Re
   return count;
 }
 
-// Sorts and composites the rectangle's lists onto the opaque colour (scissored to the rectangle).
+// Sorts and composites the rectangle's lists onto the opaque colour: one invocation a pixel.
 void AbufferPasses::resolveRect(const PassContext& ctx, const abuffer::Rect& rect) {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glBindImageTexture(kHeadsUnit, ctx.texture(name("heads")).id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   glBindImageTexture(kCountsUnit, ctx.texture(name("counts")).id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
+  glBindImageTexture(kOutputUnit, ctx.texture(m_setup.colorOut).id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNodesBinding, m_pool.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kStatsBinding, m_stats.id());
-  ctx.beginFullscreen(name("resolve"), {m_setup.colorOut});
-  glEnable(GL_SCISSOR_TEST);
-  glScissor(rect.x, rect.y, rect.width, rect.height);
-  gl::Program& p = ctx.programs.get({{"common/fullscreen.vert", "abuffer/resolve.frag"},
-                                     {"MAX_FRAGMENTS " + std::to_string(m_setup.maxFragments)},
-                                     name("resolve")});
+  gl::Program& p = ctx.programs.get(
+      {{"abuffer/resolve.comp"}, {"MAX_FRAGMENTS " + std::to_string(m_setup.maxFragments)}, name("resolve")});
   p.use();
   ctx.texture(m_setup.colorIn).bind(0);
-  p.set("uColor", 0).set("uCapacity", unsigned(m_capacity));
-  ctx.common.drawFullscreen();
-  glDisable(GL_SCISSOR_TEST);
+  p.set("uColor", 0)
+      .set("uCapacity", unsigned(m_capacity))
+      .set("uOrigin", glm::ivec2(rect.x, rect.y))
+      .set("uSize", glm::ivec2(rect.width, rect.height));
+  glDispatchCompute(GLuint((rect.width + 7) / 8), GLuint((rect.height + 7) / 8), 1);
 }
 
 std::vector<TechniqueCounter> AbufferPasses::counters() const {
