@@ -45,13 +45,18 @@ Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const
   ReferenceFrame input(reference, scene, frame.params, spp, frame.options.seed, progress);
 
   SurfaceData surfaces;
-  Image prePost;
+  Image prePost, opaque;
   const bool readsColor = reference.inputs.has(FrameInput::PrePostColor);
-  if (reference.inputs.has(FrameInput::SurfacePoints) || readsColor) {
-    if (readsColor) renderer.setTechniques(techniquesBefore(frame, reference));
+  const bool readsFragments = reference.inputs.has(FrameInput::TransparentFragments);
+  if (reference.inputs.has(FrameInput::SurfacePoints) || readsColor || readsFragments) {
+    if (readsColor || readsFragments) renderer.setTechniques(techniquesBefore(frame, reference));
     FrameOutputs outputs;
     outputs.surfaces = reference.inputs.has(FrameInput::SurfacePoints);
     if (readsColor) outputs.colors.push_back(kPrePostColorVersion);
+    if (readsFragments) {
+      outputs.colors.push_back(kOpaqueColorVersion);
+      outputs.transparentFragments = true;
+    }
     PassTimer timer(TimingMethod::CpuFinish);
     renderer.render(frame.params, frame.options.width, frame.options.height, outputs, timer);
     if (outputs.surfaces) {
@@ -61,6 +66,10 @@ Image renderReferenceFrame(Renderer& renderer, const ResolvedFrame& frame, const
     if (readsColor) {
       prePost = renderer.readColor(kPrePostColorVersion);
       input.setPrePostColor(&prePost);
+    }
+    if (readsFragments) {
+      opaque = renderer.readColor(kOpaqueColorVersion);
+      input.setTransparentFragments(&renderer.readTransparentFragments(), &opaque);
     }
   }
   return reference.compute(input, stats);

@@ -1,7 +1,9 @@
-// The three references of the Embree ray caster (reference/reference.h), registered per stage
+// The three references of the Embree ray caster (reference/reference.h), registered per stage, and
+// the transparency stage's (reference/transparency_reference.h), which belongs to no technique.
 // (docs/measuring.md "References per stage"). They share the ray caster, so they live here rather
 // than in a technique's folder.
 #include "reference/reference_registry.h"
+#include "reference/transparency_reference.h"
 
 namespace rtlab {
 namespace {
@@ -42,6 +44,7 @@ void registerBuiltinReferences(ReferenceRegistry& registry) {
   registry.add(embreeReference("ao", "ao", 1, "ambient occlusion within ao.radius", {"light<N>.", "camera.", "ao.radius"}));
   registry.add(embreeReference("indirect", "indirect", 3, "one diffuse bounce of direct light",
                                {"light<N>.", "camera."}));
+  registerTransparencyReference(registry);
 }
 
 } // namespace rtlab

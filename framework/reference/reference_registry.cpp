@@ -47,6 +47,18 @@ const Image& ReferenceFrame::prePostColor() const {
   return *m_prePostColor;
 }
 
+const CapturedFragments& ReferenceFrame::transparentFragments() const {
+  if (!m_entry.inputs.has(FrameInput::TransparentFragments) || !m_fragments)
+    throw Error(ExitCode::Internal, "reference '" + m_entry.aov + "' reads transparent fragments it did not declare");
+  return *m_fragments;
+}
+
+const Image& ReferenceFrame::opaqueColor() const {
+  if (!m_entry.inputs.has(FrameInput::TransparentFragments) || !m_opaqueColor)
+    throw Error(ExitCode::Internal, "reference '" + m_entry.aov + "' reads the opaque colour it did not declare");
+  return *m_opaqueColor;
+}
+
 float ReferenceFrame::getFloat(const std::string& key) const {
   if (!m_entry.definesKey(key))
     throw Error(ExitCode::Internal, "reference '" + m_entry.aov + "' reads key '" + key + "' it does not declare");
@@ -113,7 +125,7 @@ Scene sceneForReference(const Scene& scene, const ParamSet& params, const Refere
 
 bool referenceDependsOnKey(const ReferenceEntry& entry, const std::string& key, const TechniqueRegistry& techniques) {
   if (entry.definesKey(key)) return true;
-  if (!entry.inputs.has(FrameInput::PrePostColor)) return false;
+  if (!entry.inputs.has(FrameInput::PrePostColor) && !entry.inputs.has(FrameInput::TransparentFragments)) return false;
   const std::string prefix = key.substr(0, key.find('.'));
   if (prefix == "tonemap") return false; // after post
   std::string stage = rtlab::findStage(prefix) ? prefix : "";

@@ -9,6 +9,7 @@
 #include "reference/reference.h"
 #include "reference/surfaces.h"
 #include "scene/scene.h"
+#include "shading/fragment_capture.h"
 
 #include <atomic>
 #include <functional>
@@ -21,13 +22,14 @@ namespace rtlab {
 class Fnv1a64;
 class TechniqueRegistry;
 
-// What a reference reads back from the frame. Captured transparent fragments are not an input yet:
-// the framework cannot capture them; the order-independent transparency issue adds the input
-// together with its capture (docs/measuring.md "References per stage").
+// What a reference reads back from the frame.
 enum class FrameInput : unsigned {
   SurfacePoints = 1u << 0, // the G-buffer's surface points (SurfaceData), read back after a G-buffer-only frame
   Materials = 1u << 1,     // the scene's materials and textures; without it every material is Material{}
   PrePostColor = 1u << 2,  // the linear colour before the post stage (frame resource "color.pre_post")
+  // Every transparent fragment of the frame (shading/fragment_capture.h) and the opaque colour under
+  // them (colour version "lit"), from a frame without the transparency stage's techniques.
+  TransparentFragments = 1u << 3,
 };
 
 class FrameInputs {
@@ -42,8 +44,9 @@ private:
   unsigned m_bits = 0;
 };
 
-// The colour version the PrePostColor input reads (docs/stages.md "Colour versions").
+// The colour versions the PrePostColor and TransparentFragments inputs read (docs/stages.md "Colour versions").
 inline constexpr const char* kPrePostColorVersion = "pre_post";
+inline constexpr const char* kOpaqueColorVersion = "lit";
 
 struct ReferenceEntry;
 
@@ -59,6 +62,9 @@ public:
   // Error(Internal) unless the reference declared the input and the runner provided it.
   const SurfaceData& surfaces() const;
   const Image& prePostColor() const;
+  // TransparentFragments: the captured fragments and the opaque colour ("lit") they cover.
+  const CapturedFragments& transparentFragments() const;
+  const Image& opaqueColor() const;
   // The value of a parameter; Error(Internal) for a key the reference does not declare, so a
   // reference cannot depend on a key the sweep's hash leaves out.
   float getFloat(const std::string& key) const;
@@ -78,6 +84,10 @@ public:
   // Set by the runner (app/reference_run.h) after reading the inputs back.
   void setSurfaces(const SurfaceData* surfaces) { m_surfaces = surfaces; }
   void setPrePostColor(const Image* color) { m_prePostColor = color; }
+  void setTransparentFragments(const CapturedFragments* fragments, const Image* opaque) {
+    m_fragments = fragments;
+    m_opaqueColor = opaque;
+  }
 
 private:
   const ReferenceEntry& m_entry;
@@ -88,6 +98,8 @@ private:
   bool m_progress;
   const SurfaceData* m_surfaces = nullptr;
   const Image* m_prePostColor = nullptr;
+  const CapturedFragments* m_fragments = nullptr;
+  const Image* m_opaqueColor = nullptr;
   const std::atomic<bool>* m_cancel = nullptr;
   unsigned m_threads = 0;
 };
@@ -142,8 +154,9 @@ void registerAllReferences(ReferenceRegistry& registry);
 Scene sceneForReference(const Scene& scene, const ParamSet& params, const ReferenceEntry& entry);
 
 // Whether the value of `key` is part of the reference's identity: one of its declared keys; for a
-// reference that reads the colour before post, also every key that can change that colour (all but
-// the keys of the measured stage and its techniques, of the post stage's techniques, and tonemap.*).
+// reference that reads a colour of the frame (PrePostColor, TransparentFragments), also every key
+// that can change that colour (all but the keys of the measured stage and its techniques, of the
+// post stage's techniques, and tonemap.*).
 bool referenceDependsOnKey(const ReferenceEntry& entry, const std::string& key, const TechniqueRegistry& techniques);
 // Feeds the key and value of every key the reference depends on, in `params`' declaration order,
 // to `h`: the part of the sweep's reference hash that parameters contribute (app/sweep_plan.h

@@ -130,6 +130,7 @@ void Renderer::render(const ParamSet& params, int width, int height, const Frame
     targets.push_back(isBuiltinAov(aov) ? addAovPass(graph, aov, aovSource(aov, finalColor)) : aovResource(aov));
   for (const auto& version : outputs.colors) targets.push_back(colorVersionResource(version));
   if (outputs.displayColor) targets.push_back(res::kColorLdr);
+  if (outputs.transparentFragments) targets.push_back(addFragmentCapturePass(graph, m_fragments, outputs.captureBandBytes));
   if (outputs.surfaces)
     for (const auto* r : {&res::kPosition, &res::kGeometry, &res::kNormal, &res::kShadowPosition, &res::kShadowNormal})
       targets.push_back(*r);

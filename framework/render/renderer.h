@@ -13,6 +13,7 @@
 #include "image/image.h"
 #include "reference/surfaces.h"
 #include "scene/scene.h"
+#include "shading/fragment_capture.h"
 #include "shading/gpu_common.h"
 #include "shading/scene_gpu.h"
 
@@ -36,6 +37,8 @@ struct FrameOutputs {
   bool surfaces = false;         // keep the G-buffer's surface points for readSurfaces()
   std::vector<std::string> colors{}; // colour versions to keep for readColor(): "lighting", "lit", "pre_post", "hdr"
   bool countHdrClamped = false;      // count the HDR clamp's pixels (readHdrClamped); slower shaders, for stats only
+  bool transparentFragments = false; // capture every transparent fragment (readTransparentFragments)
+  std::size_t captureBandBytes = kMaxCaptureBytes; // the capture's buffer limit per band (tests lower it)
 };
 
 class Renderer {
@@ -73,6 +76,9 @@ public:
   std::vector<HdrClampCount> readHdrClamped() const;
   // The surface points of the last frame (needs FrameOutputs::surfaces).
   SurfaceData readSurfaces() const;
+  // Every transparent fragment of the last frame (needs FrameOutputs::transparentFragments;
+  // shading/fragment_capture.h).
+  const CapturedFragments& readTransparentFragments() const { return m_fragments; }
   // Texture of a resource of the last frame (the viewer draws it), or nullptr.
   const gl::Texture* resource(const std::string& name);
 
@@ -109,6 +115,7 @@ private:
   SceneNotifier m_notifier;
   std::vector<PassInfo> m_lastPasses;
   std::map<std::string, std::string> m_colorResources; // colour version -> resource, last frame
+  CapturedFragments m_fragments;
 };
 
 } // namespace rtlab

@@ -59,6 +59,7 @@ void ReferenceJob::State::loop() {
       frame.setThreads(cores > 1 ? cores - 1 : 1);
       if (job.surfaces) frame.setSurfaces(&*job.surfaces);
       if (job.prePostColor) frame.setPrePostColor(&*job.prePostColor);
+      if (job.transparentFragments && job.opaqueColor) frame.setTransparentFragments(&*job.transparentFragments, &*job.opaqueColor);
       ReferenceStats stats;
       const auto begin = std::chrono::steady_clock::now();
       out.image = job.entry.compute(frame, stats);
@@ -105,6 +106,8 @@ std::uint64_t ReferenceJob::start(ReferenceJobInput input) {
     throw Error(ExitCode::Internal, "reference '" + e.aov + "' needs the frame's surface points");
   if (e.inputs.has(FrameInput::PrePostColor) && !input.prePostColor)
     throw Error(ExitCode::Internal, "reference '" + e.aov + "' needs the frame's colour before post");
+  if (e.inputs.has(FrameInput::TransparentFragments) && (!input.transparentFragments || !input.opaqueColor))
+    throw Error(ExitCode::Internal, "reference '" + e.aov + "' needs the frame's transparent fragments and opaque colour");
   if (input.spp < e.minSpp || input.spp > e.maxSpp)
     usageError("spp " + std::to_string(input.spp) + " is out of range " + std::to_string(e.minSpp) + ".." +
                std::to_string(e.maxSpp) + " for the " + e.aov + " reference");

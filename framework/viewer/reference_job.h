@@ -34,6 +34,8 @@ struct ReferenceJobInput {
   unsigned seed = 1;
   std::optional<SurfaceData> surfaces; // when the entry declares FrameInput::SurfacePoints
   std::optional<Image> prePostColor;   // when the entry declares FrameInput::PrePostColor
+  std::optional<CapturedFragments> transparentFragments; // with opaqueColor: FrameInput::TransparentFragments
+  std::optional<Image> opaqueColor;
 };
 
 struct ReferenceJobResult {

@@ -131,7 +131,7 @@ TEST(CliReference, UnknownAovNamesTheRegisteredChoices) {
   const auto bogus = runProcess(RTLAB_BINARY, {"reference", "--aov", "bogus", "--size", "8x8", "--out", out});
   EXPECT_EQ(bogus.exitCode, 2) << bogus.err;
   EXPECT_EQ(rtlab::test::lineCount(bogus.err), 1) << bogus.err;
-  EXPECT_NE(bogus.err.find("rtlab: error: unknown reference AOV 'bogus' (choices: visibility, ao, indirect, bloom)"),
+  EXPECT_NE(bogus.err.find("rtlab: error: unknown reference AOV 'bogus' (choices: visibility, ao, indirect, transparency, bloom)"),
             std::string::npos)
       << bogus.err;
   const auto typo = runProcess(RTLAB_BINARY, {"reference", "--aov", "visibilty", "--size", "8x8", "--out", out});
@@ -198,6 +198,49 @@ TEST(CliReference, BloomIsTheExactConvolutionTheGaussianMethodMatches) {
   const auto spp = runProcess(RTLAB_BINARY, with({"reference", "--aov", "bloom", "--spp", "4", "--out", (dir / "x.exr").string()}));
   EXPECT_EQ(spp.exitCode, 2);
   EXPECT_NE(spp.err.find("--spp"), std::string::npos) << spp.err;
+  EXPECT_FALSE(fs::exists(dir / "x.exr"));
+}
+
+
+// `rtlab reference --aov transparency` (docs/contract.md "Transparency"): on a scene without
+// transparent layers it is the frame's colour (the stage AOV's neutral value); on `panes` it agrees
+// with the built-in fallback, which sorts whole objects back to front (exact Over wherever objects
+// do not intersect), except where the yellow pane cuts through the green one.
+TEST(CliReference, TransparencyIsExactOverAndTheOpaqueColourWithoutLayers) {
+  const fs::path dir = testDir("transparency");
+  auto both = [&](const std::string& scene) {
+    const std::vector<std::string> frame = {"--scene", scene, "--size", "96x64", "--aov", "transparency"};
+    std::vector<std::string> ref = {"reference"}, render = {"render"};
+    ref.insert(ref.end(), frame.begin(), frame.end());
+    render.insert(render.end(), frame.begin(), frame.end());
+    ref.insert(ref.end(), {"--out", (dir / (scene + "_ref.exr")).string()});
+    render.insert(render.end(), {"--out", (dir / (scene + "_gpu.exr")).string()});
+    const auto r = runProcess(RTLAB_BINARY, ref);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const auto g = runProcess(RTLAB_BINARY, render);
+    EXPECT_EQ(g.exitCode, 0) << g.err;
+    return std::pair{rtlab::readImage((dir / (scene + "_ref.exr")).string()),
+                     rtlab::readImage((dir / (scene + "_gpu.exr")).string())};
+  };
+  const auto [contactRef, contactGpu] = both("contact");
+  ASSERT_EQ(contactRef.channels, 3);
+  EXPECT_EQ(contactRef.pixels, contactGpu.pixels);
+  EXPECT_EQ(contactRef.mask, contactGpu.mask);
+
+  const auto [panesRef, panesGpu] = both("panes");
+  ASSERT_EQ(panesRef.pixelCount(), panesGpu.pixelCount());
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < panesRef.pixelCount(); ++i) {
+    EXPECT_EQ(panesRef.mask[i], panesGpu.mask[i]) << "pixel " << i;
+    double d = 0;
+    for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(double(panesRef.pixels[i * 3 + c]) - panesGpu.pixels[i * 3 + c]));
+    differing += d > 2e-3 ? 1 : 0;
+  }
+  EXPECT_GT(differing, 0u) << "the intersecting panes are sorted per object by the fallback";
+  EXPECT_LT(double(differing), 0.05 * double(panesRef.pixelCount()));
+  const auto spp = runProcess(RTLAB_BINARY, {"reference", "--scene", "panes", "--aov", "transparency", "--spp", "2",
+                                             "--out", (dir / "x.exr").string()});
+  EXPECT_EQ(spp.exitCode, 2);
   EXPECT_FALSE(fs::exists(dir / "x.exr"));
 }
 

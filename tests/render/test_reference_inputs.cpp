@@ -107,7 +107,7 @@ TEST(ReferenceInputs, PrePostColorIsTheFramesColourBeforePost) {
 
 TEST(ReferenceInputs, TheProcessRegistryHoldsTheBuiltins) {
   const ReferenceRegistry& r = ReferenceRegistry::instance();
-  EXPECT_EQ(r.choices(), "visibility, ao, indirect, bloom");
+  EXPECT_EQ(r.choices(), "visibility, ao, indirect, transparency, bloom");
   for (const char* stage : {"shadow", "ao", "indirect", "post"}) EXPECT_NE(r.findStage(stage), nullptr) << stage;
 }
 

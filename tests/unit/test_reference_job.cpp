@@ -85,7 +85,7 @@ ReferenceEntry doublingEntry(std::shared_ptr<Gate> gate) {
 }
 
 ReferenceJobInput input(const ReferenceEntry& entry, float value) {
-  ReferenceJobInput in{entry, Scene{}, ParamSet{}, 1, 1, std::nullopt, Image(4, 3, 3)};
+  ReferenceJobInput in{entry, Scene{}, ParamSet{}, 1, 1, std::nullopt, Image(4, 3, 3), std::nullopt, std::nullopt};
   for (float& p : in.prePostColor->pixels) p = value;
   return in;
 }

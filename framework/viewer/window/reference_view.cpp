@@ -106,6 +106,8 @@ std::string ReferenceView::keyFor(const ViewerState& state, unsigned seed, int w
 }
 
 void ReferenceView::update(ViewerState& state, Renderer& renderer, unsigned seed, int width, int height) {
+  m_width = width;
+  m_height = height;
   const std::string aov = referenceAovFor(state);
   const unsigned long revision = state.params.revision();
   const bool paramsStill = revision == m_lastRevision;
@@ -211,7 +213,7 @@ void ReferenceView::restartOneShot(ViewerState& state, Renderer& renderer, unsig
   const ReferenceEntry& entry = ReferenceRegistry::instance().get(aov);
   state.reference.exact = !entry.samples();
   ReferenceJobInput input{entry, sceneForReference(state.scene, state.params, entry), state.params,
-                          entry.defaultSpp, seed, std::nullopt, std::nullopt};
+                          entry.defaultSpp, seed, std::nullopt, std::nullopt, std::nullopt, std::nullopt};
   if (entry.inputs.has(FrameInput::SurfacePoints)) input.surfaces = renderer.readSurfaces();
   if (entry.inputs.has(FrameInput::PrePostColor)) {
     // The frame's own colour before post is the reference's input only when the reference measures
@@ -222,7 +224,24 @@ void ReferenceView::restartOneShot(ViewerState& state, Renderer& renderer, unsig
                                        " stage's techniques: not available in the viewer");
     input.prePostColor = renderer.readColor(kPrePostColorVersion);
   }
+  if (entry.inputs.has(FrameInput::TransparentFragments)) captureTransparency(state, entry, input);
   m_job.start(std::move(input));
+}
+
+void ReferenceView::captureTransparency(ViewerState& state, const ReferenceEntry& entry, ReferenceJobInput& input) {
+  if (!m_captureRenderer || m_captureScene != state.sceneGeneration) {
+    m_captureRenderer = std::make_unique<Renderer>(TechniqueRegistry::instance());
+    m_captureRenderer->setScene(state.scene);
+    m_captureScene = state.sceneGeneration;
+  }
+  m_captureRenderer->setTechniques(techniquesOutside(state.selection.ordered(), entry.stage));
+  FrameOutputs outputs;
+  outputs.colors = {kOpaqueColorVersion};
+  outputs.transparentFragments = true;
+  PassTimer timer(TimingMethod::CpuFinish);
+  m_captureRenderer->render(state.params, m_width, m_height, outputs, timer);
+  input.transparentFragments = m_captureRenderer->readTransparentFragments();
+  input.opaqueColor = m_captureRenderer->readColor(kOpaqueColorVersion);
 }
 
 void ReferenceView::measure(ViewerState& state, Renderer& renderer, int width, int height, const std::string& aov) {

@@ -20,6 +20,7 @@
 #include "viewer/viewer_state.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,10 @@ private:
   void restart(ViewerState& state, Renderer& renderer, unsigned seed, const std::string& aov);
   void restartProgressive(ViewerState& state, Renderer& renderer, unsigned seed, const std::string& aov);
   void restartOneShot(ViewerState& state, Renderer& renderer, unsigned seed, const std::string& aov);
+  // TransparentFragments: the frame's transparent fragments and the opaque colour under them, from
+  // a frame of the capture renderer (its own Renderer, so that the window's frame, its textures
+  // and its last passes stay as they are), with the techniques outside the transparency stage.
+  void captureTransparency(ViewerState& state, const ReferenceEntry& entry, ReferenceJobInput& input);
   // Takes the running reference's latest batch or result into m_snapshot (uploaded); false while
   // nothing of the current generation is there.
   bool takeLatest(ViewerState& state);
@@ -90,6 +95,9 @@ private:
   MetricsInputs m_metrics;
   unsigned long m_lastRevision = ~0ul; // the parameters' revision in the previous frame
   bool m_active = false;
+  std::unique_ptr<Renderer> m_captureRenderer;
+  unsigned long m_captureScene = ~0ul; // the scene generation m_captureRenderer holds
+  int m_width = 0, m_height = 0;       // the frame size of the last update()
 };
 
 } // namespace rtlab
