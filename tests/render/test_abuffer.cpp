@@ -6,10 +6,9 @@
 #include "frame/registry.h"
 #include "gl/debug.h"
 #include "params/param_set.h"
+#include "known_layers.h"
 #include "render_fixture.h"
-#include "scene/builtin_scenes.h"
 #include "scene/load.h"
-#include "scene/mesh_builder.h"
 
 #include <gtest/gtest.h>
 
@@ -20,8 +19,7 @@
 namespace rtlab {
 namespace {
 
-constexpr int kW = 160, kH = 90; // 16:9, the aspect the quads are placed for
-constexpr float kFovY = 50.0f;
+constexpr int kW = 160, kH = 90;
 
 const TechniqueRegistry& registry() {
   static const TechniqueRegistry r = [] {
@@ -62,8 +60,9 @@ struct Rig {
   }
 };
 
-// A layer facing the camera at view depth z over the pixel rectangle [x0, x1) x [y0, y1) (rows top
-// to bottom). Edges lie on pixel boundaries, so every pixel centre is clearly inside or outside.
+// A layer over the pixel rectangle [x0, x1) x [y0, y1) (rows top to bottom) at view depth z, as a
+// KnownLayer (known_layers.h: black base colour, emission E, no light, no ambient: C = E exactly).
+// Edges lie on pixel boundaries, so every pixel centre is clearly inside or outside.
 struct Layer {
   float z;
   int x0, x1, y0, y1;
@@ -73,38 +72,19 @@ struct Layer {
   bool covers(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
 };
 
-Mesh pixelQuad(const std::string& name, const Layer& l) {
-  const float halfH = std::tan(glm::radians(kFovY * 0.5f)), halfW = halfH * float(kW) / float(kH);
-  auto ndcX = [](int x) { return -1.0f + 2.0f * float(x) / float(kW); };
-  auto ndcY = [](int y) { return 1.0f - 2.0f * float(y) / float(kH); };
-  const float x0 = ndcX(l.x0), x1 = ndcX(l.x1), y0 = ndcY(l.y1), y1 = ndcY(l.y0);
-  const glm::vec3 center(0.5f * (x0 + x1) * halfW * l.z, 0.5f * (y0 + y1) * halfH * l.z, -l.z);
-  return makeQuad(name, center, {0.5f * (x1 - x0) * halfW * l.z, 0, 0}, {0, 0.5f * (y1 - y0) * halfH * l.z, 0});
-}
-
-// Black base colour, emission E, no light and no ambient: a layer's radiance is C = E exactly.
 Scene layerScene(const std::vector<Layer>& layers) {
-  builtin::SceneBuilder b("abuffer_known_layers");
-  const Layer backdrop{60.0f, 0, kW, 0, kH, 1.0f, {0.2f, 0.3f, 0.4f}, true};
-  std::vector<Layer> all = layers;
-  all.push_back(backdrop);
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    const Layer& l = all[i];
-    Material m = builtin::diffuseMaterial("m" + std::to_string(i), glm::vec3(0.0f));
-    m.emissive = l.emission;
-    m.doubleSided = true;
-    if (!l.opaque) {
-      m.baseColor.w = l.alpha;
-      m.alphaMode = AlphaMode::Blend;
-    }
-    b.addObject(pixelQuad("q" + std::to_string(i), l), b.addMaterial(m));
+  std::vector<KnownLayer> known;
+  for (const Layer& l : layers) {
+    KnownLayer k;
+    k.depth = l.z;
+    k.ndcMin = {-1.0f + 2.0f * float(l.x0) / float(kW), 1.0f - 2.0f * float(l.y1) / float(kH)};
+    k.ndcMax = {-1.0f + 2.0f * float(l.x1) / float(kW), 1.0f - 2.0f * float(l.y0) / float(kH)};
+    k.emission = l.emission;
+    k.alpha = l.alpha;
+    k.opaque = l.opaque;
+    known.push_back(k);
   }
-  b.addLight(builtin::directionalLight("off", {0.0f, -0.3f, -1.0f}, 0.0f, 0.5f));
-  Scene scene = b.finish(builtin::camera({0, 0, 0}, {0, 0, -1.0f}, kFovY));
-  scene.camera.znear = 0.5f;
-  scene.camera.zfar = 100.0f;
-  scene.ambient = glm::vec3(0.0f);
-  return scene;
+  return makeKnownLayersScene("abuffer_known_layers", known, {0.2f, 0.3f, 0.4f}, float(kW) / float(kH));
 }
 
 // Nine overlapping layers (high alpha in front of low, an HDR emitter, one drawn out of depth
@@ -127,9 +107,10 @@ std::vector<Layer> knownLayers() {
 }
 
 // Over of the `keep` nearest layers covering (x, y) in front of the opaque surface there, in
-// double precision onto `opaque`, and the number of layers there.
-glm::dvec3 exactOver(const std::vector<Layer>& layers, int x, int y, const glm::dvec3& opaque, int keep, int* depth) {
-  float opaqueZ = 60.0f;
+// double precision onto `opaque` (the frame's own opaque colour), and the number of layers there
+// (known_layers.h's exactOver composites all of them; this one keeps the nearest `keep`).
+glm::dvec3 overOfNearest(const std::vector<Layer>& layers, int x, int y, const glm::dvec3& opaque, int keep, int* depth) {
+  float opaqueZ = 1e30f;
   for (const auto& l : layers)
     if (l.opaque && l.covers(x, y)) opaqueZ = std::min(opaqueZ, l.z);
   std::vector<const Layer*> here;
@@ -163,7 +144,7 @@ TEST(Abuffer, EqualsExactOverOfKnownLayers) {
       for (int x = 0; x < kW; ++x) {
         const glm::dvec3 opaque(lit.at(x, y, 0), lit.at(x, y, 1), lit.at(x, y, 2));
         int n = 0;
-        const glm::dvec3 want = exactOver(layers, x, y, opaque, keep, &n);
+        const glm::dvec3 want = overOfNearest(layers, x, y, opaque, keep, &n);
         ASSERT_EQ(complexity.at(x, y, 0), float(n)) << x << "," << y;
         dropped += std::max(0, n - keep);
         maxDepth = std::max(maxDepth, n);
