@@ -62,9 +62,15 @@ void AbufferPasses::plan(int width, int height) {
   if (history && m_last.split) count = std::min(std::max(count, m_last.rects), height);
   m_bands = abuffer::bands(width, height, count);
   const std::uint64_t perBand = history ? std::max<std::uint64_t>(m_last.maxRectNodes, 1) : expected / std::uint64_t(count);
-  const std::uint64_t target = abuffer::grownCapacity(perBand, m_maxNodes);
-  if (!m_pool || m_capacity < target || m_capacity > 2 * target || m_capacity > m_maxNodes) allocatePool(target);
+  m_poolTarget = abuffer::grownCapacity(perBand, m_maxNodes);
+  if (!m_setup.deferPool) sizePool();
+  else if (!m_pool) allocatePool(1); // imported into the frame, sized by the first build
   if (!m_stats) m_stats = gl::BufferObject({gl::BufferKind::Storage, 2 * sizeof(GLuint)}, name("stats"));
+}
+
+void AbufferPasses::sizePool() {
+  const std::uint64_t target = m_poolTarget;
+  if (!m_pool || m_capacity < target || m_capacity > 2 * target || m_capacity > m_maxNodes) allocatePool(target);
 }
 
 void AbufferPasses::add(FrameGraph& frame, const AbufferSetup& setup) {
@@ -141,6 +147,7 @@ void AbufferPasses::add(FrameGraph& frame, const AbufferSetup& setup) {
 }
 
 void AbufferPasses::beginFrame(const PassContext& ctx) {
+  if (m_setup.deferPool) sizePool();
   m_frame = FrameCounts{};
   m_frame.width = ctx.view.width;
   m_frame.height = ctx.view.height;

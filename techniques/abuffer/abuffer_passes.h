@@ -25,6 +25,9 @@ struct AbufferSetup {
   std::string colorIn, colorOut;      // the opaque colour read (sampled); the composited colour (RGBA16F)
   std::uint64_t poolBudgetBytes = std::uint64_t(1) << 30; // the node pool's most bytes (and the GL limit)
   std::string complexityView, droppedView; // resources of the debug views ("" for none)
+  // Size the node pool when the first build runs rather than when the passes are added: for passes
+  // the graph may cull (another technique's debug view), which then hold one node until they run.
+  bool deferPool = false;
 };
 
 // Owns what outlives a frame (the node pool, the stats buffer, the last frame's counts that plan
@@ -50,6 +53,7 @@ private:
     int width = 0, height = 0;
   };
   void plan(int width, int height);
+  void sizePool(); // the pool for m_poolTarget nodes (plan() computes it)
   void beginFrame(const PassContext& ctx);
   abuffer::Rect buildNext(const PassContext& ctx);
   std::uint64_t buildRect(const PassContext& ctx, const abuffer::Rect& rect);
@@ -59,7 +63,7 @@ private:
 
   AbufferSetup m_setup;
   gl::BufferObject m_pool, m_stats;
-  std::uint64_t m_capacity = 0, m_maxNodes = 0;
+  std::uint64_t m_capacity = 0, m_maxNodes = 0, m_poolTarget = 0;
   std::vector<abuffer::Rect> m_bands;
   std::deque<abuffer::Rect> m_pending; // rectangles of the current band still to build
   abuffer::Rect m_built;               // the rectangle whose lists the pool holds

@@ -17,6 +17,7 @@
 #include "shading/gpu_common.h"
 #include "shading/hdr_clamp.h"
 #include "shading/scene_gpu.h"
+#include "techniques/common/transparency/abuffer_error.h"
 
 namespace rtlab {
 // Named, not anonymous: the technique sources are compiled in unity batches, where another file's
@@ -82,6 +83,7 @@ public:
         {kRemainingView, 1,
          "transparent fragments per pixel behind the last layer and in front of the opaque surface (dropped, or "
          "the tail's approximation)"},
+        {AbufferError::viewName("depth_peeling"), 1, AbufferError::viewHelp()},
     };
     return info;
   }
@@ -111,6 +113,7 @@ public:
     if (tail) addTailPass(frame, last, counting);
     addRemainingView(frame, last, counting);
     addComposite(frame, tail, blend);
+    m_error.add(frame, "depth_peeling", frame.colorOutput());
   }
 
   // A new scene (geometry set): the last count is about another scene, and the counter buffer goes,
@@ -119,9 +122,10 @@ public:
     if (!change.geometry) return;
     m_counts = gl::BufferObject();
     m_countValid = false;
+    m_error.release();
   }
 
-  std::size_t ownedBytes() const override { return m_counts ? sizeof(GLuint) : 0; }
+  std::size_t ownedBytes() const override { return (m_counts ? sizeof(GLuint) : 0) + m_error.ownedBytes(); }
 
   std::vector<TechniqueCounter> counters() const override {
     std::vector<TechniqueCounter> out;
@@ -135,6 +139,7 @@ public:
   }
 
 private:
+  AbufferError m_error; // the debug view <id>.error
   static gl::TextureDesc depthDesc(const FrameGraph& frame) { return frameTexture(frame, GL_DEPTH_COMPONENT32F); }
 
   // depth_peeling.layer<k>: the depth target starts as a copy of the opaque depth, so that nothing

@@ -10,6 +10,7 @@
 #include "gl/program_cache.h"
 #include "params/param_set.h"
 #include "shading/base_passes.h"
+#include "techniques/common/transparency/abuffer_error.h"
 #include "shading/gpu_common.h"
 #include "shading/hdr_clamp.h"
 #include "shading/scene_gpu.h"
@@ -101,6 +102,7 @@ public:
         {"wboit.revealage", 1, "revealage prod(1 - a) over the pixel's transparent fragments (1: uncovered)"},
         {"wboit.weight", 1, "accumulated weight sum(a w), the divisor of the average before its clamp"},
         {"wboit.complexity", 1, "transparent fragments per pixel in front of the opaque depth"},
+        {AbufferError::viewName("wboit"), 1, AbufferError::viewHelp()},
     };
     return info;
   }
@@ -121,9 +123,15 @@ public:
     addView(frame, "wboit.view_revealage", "wboit.revealage", kReveal, "VIEW_REVEALAGE", 1.0f);
     addView(frame, "wboit.view_weight", "wboit.weight", kAccum, "VIEW_WEIGHT", 1.0f / formats.scale);
     addView(frame, "wboit.view_complexity", "wboit.complexity", kCount, "VIEW_COMPLEXITY", 1.0f);
+    m_error.add(frame, "wboit", frame.colorOutput());
   }
 
-  std::size_t ownedBytes() const override { return m_counts ? 2 * sizeof(GLuint) : 0; }
+  // A new scene's geometry: the error view's A-buffer pool (sized for the old one) goes.
+  void sceneChanged(const SceneChange& change) override {
+    if (change.geometry) m_error.release();
+  }
+
+  std::size_t ownedBytes() const override { return (m_counts ? 2 * sizeof(GLuint) : 0) + m_error.ownedBytes(); }
 
   std::vector<TechniqueCounter> counters() const override {
     std::vector<TechniqueCounter> out;
@@ -137,6 +145,7 @@ public:
   }
 
 private:
+  AbufferError m_error; // the debug view <id>.error
   // Transparent fragments in front of the opaque depth -> wboit.accum (cleared to 0, blend ONE,
   // ONE) and wboit.reveal (cleared to 1, blend ZERO, ONE_MINUS_SRC_COLOR: dst * (1 - α)). The
   // depth buffer is tested, never written, so the layers do not hide each other; the scene's
