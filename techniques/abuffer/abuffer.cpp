@@ -10,7 +10,7 @@
 #include "frame/registry.h"
 #include "params/param_set.h"
 #include "shading/base_passes.h"
-#include "techniques/abuffer/abuffer_passes.h"
+#include "techniques/common/transparency/abuffer_passes.h"
 
 namespace rtlab {
 namespace {

@@ -116,7 +116,7 @@ TEST(ViewActions, SpeakerNotesAreExportedAsMarkdown) {
   r = exportNotes((dir / "talk.json").string(), (dir / "missing" / "notes.md").string());
   EXPECT_EQ(r.exitCode, 6) << r.err;
 
-  for (const char* lecture : {"shadow-family.json", "ao.json", "bloom.json"}) {
+  for (const char* lecture : {"shadow-family.json", "ao.json", "bloom.json", "transparency.json"}) {
     const fs::path source = fs::path(RTLAB_SOURCE_DIR) / "assets" / "lecture" / lecture;
     const fs::path out = dir / (std::string(lecture) + ".md");
     r = exportNotes(source.string(), out.string());
@@ -132,30 +132,51 @@ TEST(ViewActions, SpeakerNotesAreExportedAsMarkdown) {
   for (const auto& b : bloom["bookmarks"]) EXPECT_EQ(b["scene"], "glow") << b["name"];
 }
 
-// The bloom lecture (assets/lecture/bloom.json) in the viewer: every bookmark applies without a GL
-// error, and its compare bookmark (6) measures the bloom AOV against the exact reference.
-TEST(ViewActions, TheBloomLecturesCompareBookmarkMeasuresAgainstTheExactReference) {
-  ASSERT_TRUE(fs::exists(kXvfbRun)) << "install xvfb (scripts/setup.sh --test-deps)";
+// Runs a lecture (assets/lecture/<lecture>) in the viewer: applies every bookmark for a frame, then
+// `compare` again, waits for its reference, and returns the viewer's report (exit 0 asserted).
+nlohmann::json lectureCompareReport(const std::string& lecture, int compare) {
+  EXPECT_TRUE(fs::exists(kXvfbRun)) << "install xvfb (scripts/setup.sh --test-deps)";
   const fs::path dir = freshTestDir("view_actions");
+  const fs::path file = fs::path(RTLAB_SOURCE_DIR) / "assets" / "lecture" / lecture;
+  const int count = int(readJson(file)["bookmarks"].size());
   nlohmann::json script = nlohmann::json::array();
-  for (int i = 0; i < 7; ++i) {
+  for (int i = 0; i < count; ++i) {
     script.push_back({{"action", "bookmark"}, {"index", i}});
     script.push_back({{"action", "wait"}, {"frames", 1}});
   }
-  script.push_back({{"action", "bookmark"}, {"index", 5}});
+  script.push_back({{"action", "bookmark"}, {"index", compare}});
   script.push_back({{"action", "wait_samples"}, {"samples", 1}, {"timeout_s", 100}});
   script.push_back({{"action", "report"}, {"file", (dir / "report.json").string()}});
   script.push_back({{"action", "quit"}});
-  std::vector<std::string> args = {"--bookmarks", (fs::path(RTLAB_SOURCE_DIR) / "assets" / "lecture" / "bloom.json").string(),
-                                   "--script", writeScript(dir / "script.json", script)};
+  std::vector<std::string> args = {"--bookmarks", file.string(), "--script", writeScript(dir / "script.json", script)};
   args.insert(args.end(), kViewSize.begin(), kViewSize.end());
   const auto r = runView(args);
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  const auto report = readJson(dir / "report.json");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  return r.exitCode == 0 ? readJson(dir / "report.json") : nlohmann::json::object();
+}
+
+// The bloom lecture (assets/lecture/bloom.json) in the viewer: every bookmark applies without a GL
+// error, and its compare bookmark (6) measures the bloom AOV against the exact reference.
+TEST(ViewActions, TheBloomLecturesCompareBookmarkMeasuresAgainstTheExactReference) {
+  const auto report = lectureCompareReport("bloom.json", 5);
   EXPECT_EQ(report["scene"], "glow");
   EXPECT_EQ(report["compare"]["mode"], "reference");
   EXPECT_EQ(report["reference"]["aov"], "bloom");
   EXPECT_EQ(report["reference"]["exact"], true);
   EXPECT_TRUE(report["reference"]["rmse"].is_number()) << report.dump(1);
+  EXPECT_EQ(report["gl_errors"], 0);
+}
+
+// The transparency lecture (assets/lecture/transparency.json) in the viewer: every bookmark applies
+// without a GL error, and its compare bookmark (6) measures WBOIT against the exact transparency
+// reference, whose fragments the compare view captures with a renderer of its own.
+TEST(ViewActions, TheTransparencyLecturesCompareBookmarkMeasuresAgainstTheExactReference) {
+  const auto report = lectureCompareReport("transparency.json", 5);
+  EXPECT_EQ(report["scene"], "layers");
+  EXPECT_EQ(report["compare"]["mode"], "reference");
+  EXPECT_EQ(report["reference"]["aov"], "transparency");
+  EXPECT_EQ(report["reference"]["exact"], true);
+  ASSERT_TRUE(report["reference"]["rmse"].is_number()) << report.dump(1);
+  EXPECT_GT(report["reference"]["rmse"].get<double>(), 0.0) << "WBOIT is approximate on layers";
   EXPECT_EQ(report["gl_errors"], 0);
 }

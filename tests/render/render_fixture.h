@@ -40,6 +40,15 @@ TestRender renderTestFrame(const TestFrame& frame, const std::vector<std::string
 // reference renderer (renderReferenceFrame, referenceInput).
 ResolvedFrame resolvedOf(const TestFrame& frame);
 
+// Renders one frame with a test's own renderer (a fixture that keeps its scene and parameters):
+// makes the context current, activates `techniques`, renders `outputs` at w x h, and expects no GL
+// error.
+void renderOwnFrame(Renderer& renderer, const ParamSet& params, const std::vector<std::string>& techniques,
+                    const FrameOutputs& outputs, int width, int height);
+// The value of `technique`'s counter `name` after the last frame (Renderer::counters()); a test
+// failure and -1 when there is none.
+double techniqueCounter(const Renderer& renderer, const std::string& technique, const std::string& name);
+
 // Destroys the shared renderers (before the context goes).
 void releaseTestRenderers();
 

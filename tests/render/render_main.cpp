@@ -75,6 +75,23 @@ TestRender renderTestFrame(const TestFrame& frame, const std::vector<std::string
   return r;
 }
 
+void renderOwnFrame(Renderer& renderer, const ParamSet& params, const std::vector<std::string>& techniques,
+                    const FrameOutputs& outputs, int width, int height) {
+  testContext().makeCurrent();
+  renderer.setTechniques(techniques);
+  drainGlErrors();
+  PassTimer timer(TimingMethod::CpuFinish);
+  renderer.render(params, width, height, outputs, timer);
+  EXPECT_EQ(drainGlErrors(), 0);
+}
+
+double techniqueCounter(const Renderer& renderer, const std::string& technique, const std::string& name) {
+  for (const auto& c : renderer.counters())
+    if (c.technique == technique && c.name == name) return c.value;
+  ADD_FAILURE() << "no " << technique << " counter " << name;
+  return -1;
+}
+
 bool projectToPixel(const TestFrame& frame, const glm::vec3& world, int& x, int& y) {
   const FrameView view = makeFrameView(frame.scene.camera, frame.width, frame.height);
   const glm::vec4 clip = view.viewProj * glm::vec4(world, 1.0f);

@@ -40,24 +40,12 @@ struct Rig {
   }
   void set(const std::string& key, const std::string& value) { params.setText(key, value); }
   void render(const std::vector<std::string>& techniques, const std::vector<std::string>& aovs, int frames = 1) {
-    testContext().makeCurrent();
-    renderer.setTechniques(techniques);
-    drainGlErrors();
     FrameOutputs outputs;
     outputs.aovs = aovs;
     outputs.colors = {"lit", "pre_post"};
-    for (int i = 0; i < frames; ++i) {
-      PassTimer timer(TimingMethod::CpuFinish);
-      renderer.render(params, kW, kH, outputs, timer);
-    }
-    EXPECT_EQ(drainGlErrors(), 0);
+    for (int i = 0; i < frames; ++i) renderOwnFrame(renderer, params, techniques, outputs, kW, kH);
   }
-  double counter(const std::string& name) const {
-    for (const auto& c : renderer.counters())
-      if (c.technique == "abuffer" && c.name == name) return c.value;
-    ADD_FAILURE() << "no abuffer counter " << name;
-    return -1;
-  }
+  double counter(const std::string& name) const { return techniqueCounter(renderer, "abuffer", name); }
 };
 
 // A layer over the pixel rectangle [x0, x1) x [y0, y1) (rows top to bottom) at view depth z, as a

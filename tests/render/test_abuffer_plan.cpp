@@ -1,7 +1,7 @@
-// The A-buffer's memory plan (techniques/abuffer/abuffer_plan.h): bands and split parts tile their
+// The A-buffer's memory plan (techniques/common/transparency/abuffer_plan.h): bands and split parts tile their
 // rectangle exactly (every pixel once), band counts follow the expected nodes, and the pool never
 // exceeds the budget, the GL limit or the end-of-list marker.
-#include "techniques/abuffer/abuffer_plan.h"
+#include "techniques/common/transparency/abuffer_plan.h"
 
 #include <gtest/gtest.h>
 

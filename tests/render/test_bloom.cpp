@@ -77,22 +77,12 @@ struct BloomRenderer {
   // Renders the frame with the given post stack; returns the AOVs asked for.
   void render(const std::vector<std::string>& techniques, const std::vector<std::string>& aovs, int w, int h,
               bool count = false) {
-    testContext().makeCurrent();
-    renderer.setTechniques(techniques);
-    drainGlErrors();
-    PassTimer timer(TimingMethod::CpuFinish);
     FrameOutputs outputs;
     outputs.aovs = aovs;
     outputs.countHdrClamped = count;
-    renderer.render(params, w, h, outputs, timer);
-    EXPECT_EQ(drainGlErrors(), 0);
+    renderOwnFrame(renderer, params, techniques, outputs, w, h);
   }
-  double counter(const std::string& name) const {
-    for (const auto& c : renderer.counters())
-      if (c.technique == "bloom" && c.name == name) return c.value;
-    ADD_FAILURE() << "no bloom counter " << name;
-    return -1;
-  }
+  double counter(const std::string& name) const { return techniqueCounter(renderer, "bloom", name); }
 };
 
 

@@ -96,16 +96,11 @@ struct PeelRenderer {
   void set(const std::string& key, const std::string& value) { params.setText(key, value); }
   void render(const std::vector<std::string>& aovs, int w = kW, int h = kH, bool count = false,
               const std::vector<std::string>& techniques = {"depth_peeling"}, const std::vector<std::string>& colors = {}) {
-    testContext().makeCurrent();
-    renderer.setTechniques(techniques);
-    drainGlErrors();
-    PassTimer timer(TimingMethod::CpuFinish);
     FrameOutputs outputs;
     outputs.aovs = aovs;
     outputs.countHdrClamped = count;
     outputs.colors = colors;
-    renderer.render(params, w, h, outputs, timer);
-    EXPECT_EQ(drainGlErrors(), 0);
+    renderOwnFrame(renderer, params, techniques, outputs, w, h);
   }
   Image transparency(int layers, const std::string& tail = "drop", int w = kW, int h = kH) {
     set("depth_peeling.layers", std::to_string(layers));
@@ -113,12 +108,7 @@ struct PeelRenderer {
     render({"transparency"}, w, h);
     return renderer.readAov("transparency");
   }
-  double counter(const std::string& name) const {
-    for (const auto& c : renderer.counters())
-      if (c.technique == "depth_peeling" && c.name == name) return c.value;
-    ADD_FAILURE() << "no depth_peeling counter " << name;
-    return -1;
-  }
+  double counter(const std::string& name) const { return techniqueCounter(renderer, "depth_peeling", name); }
 };
 
 glm::dvec3 pixel(const Image& img, int x, int y) {

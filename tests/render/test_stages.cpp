@@ -130,16 +130,11 @@ struct StageRenderer {
   }
   void render(const std::vector<std::string>& techniques, const std::vector<std::string>& aovs,
               const std::vector<std::string>& colors = {}, bool countHdrClamped = false) {
-    testContext().makeCurrent();
-    renderer.setTechniques(techniques);
-    drainGlErrors();
-    PassTimer timer(TimingMethod::CpuFinish);
     FrameOutputs outputs;
     outputs.aovs = aovs;
     outputs.colors = colors;
     outputs.countHdrClamped = countHdrClamped;
-    renderer.render(params, kW, kH, outputs, timer);
-    EXPECT_EQ(drainGlErrors(), 0);
+    renderOwnFrame(renderer, params, techniques, outputs, kW, kH);
   }
   bool ran(const std::string& pass) const {
     const auto& passes = renderer.lastPasses();

@@ -135,23 +135,13 @@ struct WboitRenderer {
   void set(const std::string& key, const std::string& value) { params.setText(key, value); }
   void render(const std::vector<std::string>& techniques, const std::vector<std::string>& aovs, bool count = false,
               int w = kW, int h = kH) {
-    testContext().makeCurrent();
-    renderer.setTechniques(techniques);
-    drainGlErrors();
-    PassTimer timer(TimingMethod::CpuFinish);
     FrameOutputs outputs;
     outputs.aovs = aovs;
     outputs.colors = {"lit"};
     outputs.countHdrClamped = count;
-    renderer.render(params, w, h, outputs, timer);
-    EXPECT_EQ(drainGlErrors(), 0);
+    renderOwnFrame(renderer, params, techniques, outputs, w, h);
   }
-  double counter(const std::string& name) const {
-    for (const auto& c : renderer.counters())
-      if (c.technique == "wboit" && c.name == name) return c.value;
-    ADD_FAILURE() << "no wboit counter " << name;
-    return -1;
-  }
+  double counter(const std::string& name) const { return techniqueCounter(renderer, "wboit", name); }
 };
 
 // The largest difference of any channel of any pixel from `want` (the same for every pixel),

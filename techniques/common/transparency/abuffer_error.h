@@ -1,11 +1,11 @@
 // The transparency techniques' debug view of their error: per pixel, the largest absolute
 // difference over R, G and B between the technique's composite and the exact A-buffer of the same
-// frame (techniques/abuffer/abuffer_passes.h, max_fragments 128, run under the technique's own
+// frame (techniques/common/transparency/abuffer_passes.h, max_fragments 128, run under the technique's own
 // prefix). Its passes run only when the view is requested (the graph culls them otherwise), so a
 // technique pays for it only then; the A-buffer's node pool is allocated when it first runs and kept
 // until the scene's geometry changes or the technique is turned off. wboit and depth_peeling use it (their READMEs).
 #pragma once
-#include "techniques/abuffer/abuffer_passes.h"
+#include "techniques/common/transparency/abuffer_passes.h"
 
 #include <string>
 

@@ -1,5 +1,5 @@
 // The A-buffer's memory plan (abuffer_plan.h).
-#include "techniques/abuffer/abuffer_plan.h"
+#include "techniques/common/transparency/abuffer_plan.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #pragma once
 #include "frame/technique.h"
 #include "gl/buffer.h"
-#include "techniques/abuffer/abuffer_plan.h"
+#include "techniques/common/transparency/abuffer_plan.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -5,7 +5,7 @@
 // GL_MAX_SHADER_STORAGE_BLOCK_SIZE) and builds again; when they exceed even that, it splits the
 // band into parts built and resolved one after another (the resolve pass does the later parts),
 // and the next frame plans more bands from this frame's count.
-#include "techniques/abuffer/abuffer_passes.h"
+#include "techniques/common/transparency/abuffer_passes.h"
 
 #include "frame/frame_graph.h"
 #include "gl/program_cache.h"
