@@ -27,7 +27,7 @@ namespace {
 std::vector<OptionSpec> sweepOptions() {
   auto specs = frameOptionSpecs();
   for (auto& s : specs)
-    if (s.name == "--technique") s.help = "the techniques to sweep, all of one stage (shadow, ao or indirect): A,B,...";
+    if (s.name == "--technique") s.help = "the techniques to sweep, all of one stage with a reference (shadow, ao, indirect, transparency, post): A,B,...";
   specs.push_back({"--vary", "", true, "KEY=SPEC", "a sweep axis (repeatable; several make a cross product): "
                                                    "KEY=V1,V2,... or KEY=LO:HI:N (linear or log by the key's scale)"});
   specs.push_back({"--out", "", true, "DIR", "output folder: sweep.json, jobs.txt, points/, reference/, results.csv, report.html"});
