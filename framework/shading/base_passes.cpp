@@ -156,13 +156,17 @@ void addTransparentPass(FrameGraph& frame, const std::string& input, const std::
         std::vector<std::string> defines;
         if (ctx.common.hdrClamp.counting()) defines.push_back("HDR_CLAMP_COUNT");
         gl::Program& p = ctx.programs.get({{"shading/surface.vert", "shading/forward.frag"}, defines, "forward"});
-        p.set("uViewProj", ctx.view.viewProj)
-            .set("uCameraPosition", ctx.view.cameraPosition)
-            .set("uAmbient", ctx.scene.ambient);
-        ctx.common.bindLights(p);
+        setLayerUniforms(p, ctx);
         ctx.common.hdrClamp.bind(p, "transparent");
         ctx.sceneGpu.draw(p, SceneGpu::Filter::Transparent, true, ctx.view.cameraPosition);
       });
+}
+
+void setLayerUniforms(gl::Program& p, const PassContext& ctx) {
+  p.set("uViewProj", ctx.view.viewProj)
+      .set("uCameraPosition", ctx.view.cameraPosition)
+      .set("uAmbient", ctx.scene.ambient);
+  ctx.common.bindLights(p);
 }
 
 void addTonemapPass(FrameGraph& frame, const std::string& color) {

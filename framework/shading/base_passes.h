@@ -9,6 +9,8 @@
 namespace rtlab {
 
 class FrameGraph;
+struct PassContext;
+namespace gl { class Program; }
 
 // Frame-size texture descriptions.
 gl::TextureDesc frameTexture(const FrameGraph& frame, GLenum format);
@@ -42,6 +44,10 @@ void addLightingPass(FrameGraph& frame, const std::string& output, bool rectLigh
 void addStageFallback(FrameGraph& frame, const std::string& fallback, const std::string& input, const std::string& output);
 // Transparent surfaces over `input`, written to `output` (the stage's fallback "transparent").
 void addTransparentPass(FrameGraph& frame, const std::string& input, const std::string& output);
+// The uniforms of a program that draws the transparent layers with shading/surface.vert and
+// shading/layer.glsl: uViewProj, uCameraPosition, uAmbient and the lights. Every pass that shades
+// layer fragments sets them through here (the fallback, the transparency techniques, the capture).
+void setLayerUniforms(gl::Program& program, const PassContext& ctx);
 void addTonemapPass(FrameGraph& frame, const std::string& color);
 // Where a built-in AOV's value comes from in this frame: the renderer resolves it from the stage
 // table (StageInfo::aov, docs/stages.md "Stage AOVs").

@@ -42,13 +42,6 @@ std::vector<std::pair<int, int>> planBands(const std::vector<GLuint>& rowCounts,
   return bands;
 }
 
-void setLayerUniforms(gl::Program& p, PassContext& ctx) {
-  p.set("uViewProj", ctx.view.viewProj)
-      .set("uCameraPosition", ctx.view.cameraPosition)
-      .set("uAmbient", ctx.scene.ambient);
-  ctx.common.bindLights(p);
-}
-
 } // namespace
 
 std::string addFragmentCapturePass(FrameGraph& frame, CapturedFragments& out, std::size_t maxBytes) {
@@ -99,8 +92,7 @@ std::string addFragmentCapturePass(FrameGraph& frame, CapturedFragments& out, st
         }
         gl::BufferObject buffer({gl::BufferKind::Storage, kHeaderBytes + largest * sizeof(CapturedFragment)},
                                 "transparency.capture_fragments");
-        std::vector<std::string> defines;
-        gl::Program& capture = ctx.programs.get({{"shading/surface.vert", "shading/capture.frag"}, defines, "capture"});
+        gl::Program& capture = ctx.programs.get({{"shading/surface.vert", "shading/capture.frag"}, {}, "capture"});
         setLayerUniforms(capture, ctx);
         capture.set("uHeight", height);
         out.fragments.reserve(total);

@@ -46,8 +46,7 @@ std::string layerPassName(int k) { return "depth_peeling.layer" + std::to_string
 gl::Program& peelProgram(PassContext& ctx, const std::vector<std::string>& defines) {
   gl::Program& p = ctx.programs.get({{"shading/surface.vert", "depth_peeling/peel.frag"}, defines, "depth_peeling.peel"});
   p.use();
-  p.set("uViewProj", ctx.view.viewProj).set("uCameraPosition", ctx.view.cameraPosition).set("uAmbient", ctx.scene.ambient);
-  ctx.common.bindLights(p);
+  setLayerUniforms(p, ctx);
   return p;
 }
 

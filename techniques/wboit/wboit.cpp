@@ -182,10 +182,8 @@ private:
           gl::Program& p =
               ctx.programs.get({{"shading/surface.vert", "wboit/accumulate.frag"}, defines, "wboit.accumulate"});
           p.use();
-          p.set("uViewProj", ctx.view.viewProj)
-              .set("uView", ctx.view.view)
-              .set("uCameraPosition", ctx.view.cameraPosition)
-              .set("uAmbient", ctx.scene.ambient)
+          setLayerUniforms(p, ctx);
+          p.set("uView", ctx.view.view)
               .set("uWeightFunction", weight.function)
               .set("uDepthScale", weight.depthScale)
               .set("uExponent", weight.exponent)
@@ -193,7 +191,6 @@ private:
               .set("uMaxWeight", weight.maxWeight)
               .set("uAccumScale", formats.scale)
               .set("uFragmentCap", formats.fragmentCap);
-          ctx.common.bindLights(p);
           ctx.common.hdrClamp.bind(p, "wboit.accumulate");
           ctx.sceneGpu.draw(p, SceneGpu::Filter::Transparent, true, ctx.view.cameraPosition);
         });

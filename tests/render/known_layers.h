@@ -22,7 +22,8 @@ struct KnownLayer {
 
 // Layers in front of an opaque backdrop at depth 50 emitting `backdrop`, for frames of aspect
 // `aspect` (width / height); the camera's fov is 60 degrees. The instances are added in the order
-// given (so a test can shuffle the draw order).
+// given; SceneGpu still draws transparent instances back to front, so the order given is the draw
+// order only among layers whose bounds sort equal (test_depth_peeling.cpp gives them equal bounds).
 Scene makeKnownLayersScene(const std::string& name, const std::vector<KnownLayer>& layers, const glm::vec3& backdrop,
                            float aspect);
 

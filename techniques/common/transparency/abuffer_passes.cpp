@@ -214,11 +214,8 @@ std::uint64_t AbufferPasses::buildRect(const PassContext& ctx, const abuffer::Re
   std::vector<std::string> defines;
   if (ctx.common.hdrClamp.counting()) defines.push_back("HDR_CLAMP_COUNT");
   gl::Program& p = ctx.programs.get({{"shading/surface.vert", "abuffer/build.frag"}, defines, name("build")});
-  p.set("uViewProj", ctx.view.viewProj)
-      .set("uCameraPosition", ctx.view.cameraPosition)
-      .set("uAmbient", ctx.scene.ambient)
-      .set("uCapacity", unsigned(m_capacity));
-  ctx.common.bindLights(p);
+  setLayerUniforms(p, ctx);
+  p.set("uCapacity", unsigned(m_capacity));
   ctx.common.hdrClamp.bind(p, name("build"));
   ctx.sceneGpu.draw(p, SceneGpu::Filter::Transparent, true, ctx.view.cameraPosition);
   glDisable(GL_SCISSOR_TEST);
