@@ -21,6 +21,12 @@ struct SurfaceData {
   // normal (a flat surface).
   std::vector<glm::vec3> shadingPoint;
   std::vector<glm::vec3> smoothNormal;
+  // The material the G-buffer holds at each pixel (textures applied): base colour, metallic and
+  // perceptual roughness as the lighting pass reads them (gbuffer.albedo, gbuffer.material), so a
+  // reference that shades (arealight) uses the GPU's own material values. Empty, or one per pixel.
+  std::vector<glm::vec3> baseColor;
+  std::vector<float> metallic;
+  std::vector<float> roughness;
   std::vector<std::uint8_t> valid;        // 1 on surface pixels, 0 on background
   std::size_t pixelCount() const { return std::size_t(width) * height; }
 };

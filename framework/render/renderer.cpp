@@ -142,7 +142,8 @@ void Renderer::render(const ParamSet& params, int width, int height, const Frame
   if (outputs.displayColor) targets.push_back(res::kColorLdr);
   if (outputs.transparentFragments) targets.push_back(addFragmentCapturePass(graph, m_fragments, outputs.captureBandBytes));
   if (outputs.surfaces)
-    for (const auto* r : {&res::kPosition, &res::kGeometry, &res::kNormal, &res::kShadowPosition, &res::kShadowNormal})
+    for (const auto* r : {&res::kPosition, &res::kGeometry, &res::kNormal, &res::kShadowPosition, &res::kShadowNormal,
+                          &res::kAlbedo, &res::kMaterial})
       targets.push_back(*r);
   graph.compile(targets);
   timer.beginFrame();
@@ -257,9 +258,13 @@ SurfaceData Renderer::readSurfaces() const {
   const gl::Texture* nrm = pool.find(res::kNormal);
   const gl::Texture* shadowPos = pool.find(res::kShadowPosition);
   const gl::Texture* shadowNrm = pool.find(res::kShadowNormal);
-  if (!pos || !geo || !nrm || !shadowPos || !shadowNrm) throw Error(ExitCode::Internal, "surfaces were not kept (FrameOutputs::surfaces)");
+  const gl::Texture* albedo = pool.find(res::kAlbedo);
+  const gl::Texture* material = pool.find(res::kMaterial);
+  if (!pos || !geo || !nrm || !shadowPos || !shadowNrm || !albedo || !material) throw Error(ExitCode::Internal, "surfaces were not kept (FrameOutputs::surfaces)");
   const Image p = readTexture(*pos, 3, false), g = readTexture(*geo, 3, true), n = readTexture(*nrm, 3, false);
   const Image sp = readTexture(*shadowPos, 3, false), sn = readTexture(*shadowNrm, 3, false);
+  // Alpha: metallic (albedo) and roughness (material).
+  const Image am = readTexture(*albedo, 3, true), em = readTexture(*material, 3, true);
   SurfaceData s;
   s.width = p.width;
   s.height = p.height;
@@ -269,6 +274,9 @@ SurfaceData Renderer::readSurfaces() const {
   s.shadingNormal.resize(count);
   s.shadingPoint.resize(count);
   s.smoothNormal.resize(count);
+  s.baseColor.resize(count);
+  s.metallic.resize(count);
+  s.roughness.resize(count);
   s.valid.resize(count);
   auto unit = [](glm::vec3 v) { return glm::dot(v, v) > 0.0f ? glm::normalize(v) : glm::vec3(0.0f); };
   for (std::size_t i = 0; i < count; ++i) {
@@ -278,6 +286,9 @@ SurfaceData Renderer::readSurfaces() const {
     s.shadingNormal[i] = unit(glm::vec3(n.pixels[i * 3], n.pixels[i * 3 + 1], n.pixels[i * 3 + 2]));
     s.shadingPoint[i] = glm::vec3(sp.pixels[i * 3], sp.pixels[i * 3 + 1], sp.pixels[i * 3 + 2]);
     s.smoothNormal[i] = unit(glm::vec3(sn.pixels[i * 3], sn.pixels[i * 3 + 1], sn.pixels[i * 3 + 2]));
+    s.baseColor[i] = glm::vec3(am.pixels[i * 3], am.pixels[i * 3 + 1], am.pixels[i * 3 + 2]);
+    s.metallic[i] = am.mask[i];
+    s.roughness[i] = em.mask[i];
   }
   return s;
 }

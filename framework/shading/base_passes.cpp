@@ -115,6 +115,8 @@ void addLightingPass(FrameGraph& frame, const std::string& output, bool rectLigh
         for (const auto& stage : stages())
           if (stage.feedsLighting() && ctx.has(stage.output)) bind(lightingInput(stage).sampler, stage.output);
         p.set("uCameraPosition", ctx.view.cameraPosition)
+            .set("uInvViewProj", ctx.view.invViewProj)
+            .set("uViewportSize", glm::vec2(ctx.view.width, ctx.view.height))
             .set("uAmbient", ctx.scene.ambient)
             .set("uBackground", ctx.scene.background);
         ctx.common.bindLights(p);

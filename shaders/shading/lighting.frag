@@ -4,10 +4,13 @@
 // stage's irradiance, also scaled by the ao stage's output. Light 0 is scaled by the shadow
 // stage's visibility; the others are unshadowed. AO never scales direct light. With
 // SKIP_RECT_LIGHTS (an arealight technique is active) rectangular lights are left to that
-// technique instead of being added as points. The result is clamped to 65504 (docs/stages.md).
+// technique instead of being added as points, and that technique also draws their emitting faces,
+// which this pass draws otherwise (common/rect_face.glsl). The result is clamped to 65504
+// (docs/stages.md).
 #include "../common/brdf.glsl"
 #include "../common/hdr.glsl"
 #include "../common/lights.glsl"
+#include "../common/rect_face.glsl"
 
 in vec2 vUv;
 
@@ -26,6 +29,8 @@ uniform sampler2D uAo;
 uniform sampler2D uIndirect;
 #endif
 uniform vec3 uCameraPosition;
+uniform mat4 uInvViewProj;
+uniform vec2 uViewportSize;
 uniform vec3 uAmbient;
 uniform vec3 uBackground;
 uniform int uEmissionClampSlot; // the G-buffer pass's counter: its emission clamp is counted here
@@ -35,11 +40,18 @@ layout(location = 0) out vec4 oColor;
 void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec4 geometry = texelFetch(uGeometry, px, 0);
+  vec3 p = texelFetch(uPosition, px, 0).xyz;
+#ifndef SKIP_RECT_LIGHTS
+  vec3 face;
+  if (rectLightFaceAtPixel(gl_FragCoord.xy, uViewportSize, uInvViewProj, uCameraPosition, geometry.w >= 0.5, p, face)) {
+    oColor = vec4(clampHdr(face), geometry.w >= 0.5 ? 1.0 : 0.0);
+    return;
+  }
+#endif
   if (geometry.w < 0.5) {
     oColor = vec4(clampHdr(uBackground), 0.0);
     return;
   }
-  vec3 p = texelFetch(uPosition, px, 0).xyz;
   vec4 normalOcc = texelFetch(uNormal, px, 0);
   vec4 albedoMetal = texelFetch(uAlbedo, px, 0);
   vec4 emissiveRough = texelFetch(uMaterial, px, 0);
