@@ -62,9 +62,10 @@ TEST(LtcFit, CommittedTableHasTheDefaultGrid) {
 // moments use the table's seed, so they are recomputed exactly; the fit starts from the
 // neighbour's parameters as stored (floats, M^-1 normalised), not from the doubles the fit carried,
 // so Nelder-Mead may stop at a slightly different point. Measured: the refit lobes differ from the
-// committed ones by less than 1e-5 (L1), while neighbouring cells' lobes differ by 0.039 to 0.17 at
-// these cells. The bound, 0.01, is a quarter of the smallest neighbour difference: the refit must
-// land on this cell's lobe, not stay at the neighbour's (checked: > 0.03 apart).
+// committed ones by 2e-8 to 1.1e-7 (L1: the floats' rounding), neighbouring cells' lobes by 0.039
+// to 0.17 (checked below: > 0.03, so staying at the neighbour fails), and a crippled optimiser
+// (20 evaluations per Nelder-Mead run instead of 400) lands 0.004 to 0.0097 away. The bound, 1e-3,
+// sits between: far above the rounding, below a fit that stopped early.
 TEST(LtcFit, ReproducesCommittedCellsFromScratch) {
   const LtcTable& t = committed();
   const int n = t.size;
@@ -82,7 +83,7 @@ TEST(LtcFit, ReproducesCommittedCellsFromScratch) {
     EXPECT_FLOAT_EQ(float(fit.moments.fresnel), t.fresnelAt(c.i, c.j));
     const glm::dmat3 refit = glm::inverse(unpackInverse(fit.mInv));
     const double difference = ltcL1Difference(refit, storedM(t, c.i, c.j), 4096, 7);
-    EXPECT_LT(difference, 0.01);
+    EXPECT_LT(difference, 1e-3);
     // ... while the neighbour's lobe is measurably another one.
     EXPECT_GT(ltcL1Difference(storedM(t, c.i + 1, c.j), storedM(t, c.i, c.j), 4096, 7), 0.03);
   }
