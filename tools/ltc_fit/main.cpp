@@ -9,23 +9,16 @@
 #include "reference/progress.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/interrupt.h"
 
 #include <unistd.h>
 
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <thread>
 
 namespace {
-
-void onInterrupt(int) {
-  rtlab::removeTemporaries();
-  static const char kMsg[] = "rtlab: error: interrupted\n";
-  [[maybe_unused]] auto n = ::write(2, kMsg, sizeof(kMsg) - 1);
-  ::_exit(int(rtlab::ExitCode::Interrupted));
-}
 
 // Pixels per table cell in the error map (64 x 64 cells: 512 x 512).
 constexpr int kErrorMapScale = 8;
@@ -44,7 +37,7 @@ const std::vector<rtlab::OptionSpec> kOptions = {
 
 int run(int argc, char** argv) {
   using namespace rtlab;
-  const Args args("rtlab_ltc_fit", kOptions, argc, argv, 1);
+  const Args args("", kOptions, argc, argv, 1, 0, "rtlab_ltc_fit");
   if (args.help()) {
     std::fputs(formatHelp("rtlab_ltc_fit [options]",
                           "Fits the linearly transformed cosines of the frame's GGX specular lobe (D V cos, height-correlated\n"
@@ -95,8 +88,7 @@ int run(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-  std::signal(SIGINT, onInterrupt);
-  std::signal(SIGTERM, onInterrupt);
+  rtlab::installInterruptHandler();
   try {
     return run(argc, argv);
   } catch (const rtlab::Error& e) {
