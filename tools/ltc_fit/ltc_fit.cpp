@@ -194,6 +194,11 @@ double lobeL1Error(double alpha, double cosTheta, double magnitude, const glm::d
   return objective.estimate(LtcLobe(m), [](double d) { return d; });
 }
 
+LobeMoments cellMoments(int i, int j, int n, int samples, std::uint64_t seed) {
+  return lobeMoments(brdf::alphaFromRoughness(LtcTable::roughnessAt(i, n)), LtcTable::cosThetaAt(j, n),
+                     kMomentSampleFactor * samples, cellSeed(seed, i, j, kMomentsStream));
+}
+
 double ltcL1Difference(const glm::dmat3& a, const glm::dmat3& b, int samples, std::uint64_t seed) {
   const LtcLobe lobeA(a), lobeB(b);
   const R2Sequence seqA(seed), seqB(seed ^ 0xa0761d6478bd642full);
@@ -212,7 +217,7 @@ CellFit fitCell(int i, int j, int n, const LtcParams& start, int samples, std::u
   const double alpha = brdf::alphaFromRoughness(LtcTable::roughnessAt(i, n));
   const double cosTheta = LtcTable::cosThetaAt(j, n);
   CellFit fit;
-  fit.moments = lobeMoments(alpha, cosTheta, kMomentSampleFactor * samples, cellSeed(seed, i, j, kMomentsStream));
+  fit.moments = cellMoments(i, j, n, samples, seed);
   const glm::dvec3 averageDir = fit.moments.averageDir;
   const Objective objective(alpha, cosTheta, fit.moments.magnitude, samples, cellSeed(seed, i, j, kObjectiveStream));
   auto cubed = [](double d) { return d * d * d; };

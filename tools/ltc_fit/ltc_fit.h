@@ -60,6 +60,8 @@ LtcParams paramsFromInverse(const std::array<double, 4>& abcd, const glm::dvec3&
 std::uint64_t cellSeed(std::uint64_t seed, int i, int j, int stream);
 
 LobeMoments lobeMoments(double alpha, double cosTheta, int samples, std::uint64_t seed);
+// The moments of cell (i, j) exactly as fitCell computes them (its sample count and stream).
+LobeMoments cellMoments(int i, int j, int n, int samples, std::uint64_t seed);
 // Fits cell (i, j) of an n x n table (LtcTable's grid) from `start` (the neighbour's parameters),
 // with the table's seed and per-cell sample count: exactly what fitTable computes for that cell.
 CellFit fitCell(int i, int j, int n, const LtcParams& start, int samples, std::uint64_t seed);

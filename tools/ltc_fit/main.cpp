@@ -1,9 +1,11 @@
 // rtlab_ltc_fit: fits the LTC tables of the frame's GGX lobe (assets/ltc/README.md) and writes them
 // with LtcTable::save. Every failure is one line "rtlab: error: ..." on stderr and the exit code of
 // docs/contract.md (2 usage, 6 output, 1 internal).
+#include "error_map.h"
 #include "ltc_fit.h"
 
 #include "app/args.h"
+#include "image/image.h"
 #include "reference/progress.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -25,12 +27,18 @@ void onInterrupt(int) {
   ::_exit(int(rtlab::ExitCode::Interrupted));
 }
 
+// Pixels per table cell in the error map (64 x 64 cells: 512 x 512).
+constexpr int kErrorMapScale = 8;
+
 const std::vector<rtlab::OptionSpec> kOptions = {
     {"--size", "", true, "N", "table size N x N, 2..1024 (default 64)"},
     {"--samples", "", true, "S", "per-cell samples of each MIS strategy, 16..1048576 (default 1024)"},
     {"--seed", "", true, "N", "seed of every sample set, 0..2^63-1 (default 1)"},
     {"--threads", "", true, "T", "worker threads, 1..256 (default: the CPU count); the table does not depend on it"},
     {"--out", "", true, "FILE", "the table to write (default ggx.json)"},
+    {"--error-map", "", true, "FILE", "also write the fit error's heat map (PNG; assets/ltc/README.md)"},
+    {"--error-max", "", true, "E", "the error at the top of the heat map's scale, > 0 (default 0.5)"},
+    {"--table", "", true, "FILE", "read this table instead of fitting one (with --error-map only)"},
     {"--quiet", "-q", false, "", "no progress bar"},
 };
 
@@ -44,6 +52,20 @@ int run(int argc, char** argv) {
                           kOptions)
                    .c_str(),
                stdout);
+    return 0;
+  }
+  const std::string errorMap = args.get("--error-map");
+  const float errorMax = float(parsePositiveNumber("--error-max", args.get("--error-max", "0.5")));
+  if (args.has("--error-map")) {
+    requirePngPath(errorMap, "--error-map");
+    checkOutputPath(errorMap);
+  }
+  if (args.has("--table")) {
+    for (const char* option : {"--size", "--samples", "--seed", "--threads", "--out"})
+      if (args.has(option)) usageError(std::string(option) + " cannot be combined with --table (which reads a fitted table)");
+    if (!args.has("--error-map")) usageError("--table needs --error-map (there is nothing else to do with a fitted table)");
+    const LtcTable table = LtcTable::load(args.get("--table"));
+    writeImage(errorMap, ltcfit::ltcErrorMap(table, errorMax, kErrorMapScale));
     return 0;
   }
   ltcfit::FitOptions options;
@@ -64,6 +86,7 @@ int run(int argc, char** argv) {
   }
   table.fitSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   table.save(out);
+  if (args.has("--error-map")) writeImage(errorMap, ltcfit::ltcErrorMap(table, errorMax, kErrorMapScale));
   std::fprintf(stderr, "ltc fit: %dx%d, %d samples, seed %llu, %d threads: %.1f s -> %s\n", options.size, options.size,
                options.samples, (unsigned long long)options.seed, options.threads, table.fitSeconds, out.c_str());
   return 0;
