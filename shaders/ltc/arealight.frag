@@ -36,15 +36,17 @@ void ltcRectPolygon(GpuLight light, vec3 p, out vec3 q[kLtcMaxClipped]) {
   q[3] = c - r + u;
 }
 
-// The form factor of the light's polygon q[0..n-1] (relative to p, world axes) after `toCosine`
-// (world to the clamped cosine's frame), for a light seen from its emitting side (`front`) or not.
-float ltcFormFactor(vec3 q[kLtcMaxClipped], int n, mat3 toCosine, bool front, bool twoSided) {
+// The form factor of the light's polygon q[0..n-1] (relative to p, world axes) for the clamped
+// cosine M^-1 (`inverse`, identity for the diffuse term) in the (n, v) frame `frame`, for a light
+// seen from its emitting side (`front`) or not.
+float ltcFormFactor(vec3 q[kLtcMaxClipped], int n, mat3 frame, mat3 inverse, bool front, bool twoSided) {
+  if (!front && !twoSided) return 0.0;
   vec3 v[kLtcMaxClipped];
-  for (int i = 0; i < n; ++i) v[i] = toCosine * q[i];
+  for (int i = 0; i < n; ++i) v[i] = frame * q[i];
 #ifdef LTC_HORIZON_SPHERE
   // Heitz 2017: the unclipped polygon's vector form factor F, replaced by a sphere of the same F
   // whose horizon-clipped form factor is tabulated.
-  if (!front && !twoSided) return 0.0;
+  for (int i = 0; i < n; ++i) v[i] = inverse * v[i];
   vec3 f = ltcPolygonVector(v, n);
   if (!front) f = -f; // the back face winds the other way
   float len = length(f);
@@ -53,7 +55,14 @@ float ltcFormFactor(vec3 q[kLtcMaxClipped], int n, mat3 toCosine, bool front, bo
   uv = uv * ((uLtcSize - 1.0) / uLtcSize) + 0.5 / uLtcSize;
   return len * texture(uLtcSphere, uv).r;
 #else
-  float e = ltcClippedFormFactor(v, n);
+  // Clipped twice: to the surface's horizon (the definition integrates over the shading normal's
+  // hemisphere), then, after M^-1, to the clamped cosine's (the LTC's support, a hemisphere that
+  // M tilts partly below the surface's: without the first clip a light just below the horizon
+  // leaks into the specular term). For M = I the second clip changes nothing.
+  int m = ltcClipToHorizon(v, n);
+  if (m < 3) return 0.0;
+  for (int i = 0; i < m; ++i) v[i] = inverse * v[i];
+  float e = ltcClippedFormFactor(v, m);
   return twoSided ? abs(e) : max(e, 0.0);
 #endif
 }
@@ -77,8 +86,8 @@ void main() {
   oValue = vec4(vec3(scale.w), 1.0);
   return;
 #endif
-  mat3 diffuseFrame = ltcFrame(n, v);
-  mat3 specularFrame = ltcInverseMatrix(texture(uLtcMatrix, uv)) * diffuseFrame;
+  mat3 frame = ltcFrame(n, v);
+  mat3 inverse = ltcInverseMatrix(texture(uLtcMatrix, uv));
 
   vec3 diffuse = vec3(0.0), specular = vec3(0.0);
   for (int i = 0; i < uLightCount; ++i) {
@@ -91,8 +100,8 @@ void main() {
     vec3 q[kLtcMaxClipped];
     ltcRectPolygon(light, p, q);
     vec3 radiance = light.colorIntensity.rgb * light.colorIntensity.w;
-    diffuse += radiance * ltcFormFactor(q, 4, diffuseFrame, side > 0.0, twoSided);
-    specular += radiance * ltcFormFactor(q, 4, specularFrame, side > 0.0, twoSided);
+    diffuse += radiance * ltcFormFactor(q, 4, frame, mat3(1.0), side > 0.0, twoSided);
+    specular += radiance * ltcFormFactor(q, 4, frame, inverse, side > 0.0, twoSided);
   }
 
   float metallic = albedo.a;
