@@ -25,7 +25,7 @@ layout(location = 0) out vec4 oValue;
 
 // The rectangle's corners relative to p, counter-clockwise about the axis opposite to the
 // direction it emits in (so the emitting face, seen from in front, integrates to a positive value).
-void ltcRectPolygon(GpuLight light, vec3 p, out vec3 q[kLtcMaxClipped]) {
+void ltcRectPolygon(GpuLight light, vec3 p, out vec3 q[kLtcMaxVertices]) {
   vec3 c = light.positionType.xyz - p;
   vec3 r = light.rectRight.xyz * (0.5 * light.rectRight.w);
   vec3 u = light.rectUp.xyz * (0.5 * light.rectUp.w);
@@ -37,16 +37,18 @@ void ltcRectPolygon(GpuLight light, vec3 p, out vec3 q[kLtcMaxClipped]) {
 }
 
 // The form factor of the light's polygon q[0..n-1] (relative to p, world axes) for the clamped
-// cosine M^-1 (`inverse`, identity for the diffuse term) in the (n, v) frame `frame`, for a light
-// seen from its emitting side (`front`) or not.
-float ltcFormFactor(vec3 q[kLtcMaxClipped], int n, mat3 frame, mat3 inverse, bool front, bool twoSided) {
+// cosine M^-1 (`inverse`; `diffuse`: M = I) in the (n, v) frame `frame`, for a light seen from its
+// emitting side (`front`) or not.
+float ltcFormFactor(vec3 q[kLtcMaxVertices], int n, mat3 frame, mat3 inverse, bool diffuse, bool front,
+                    bool twoSided) {
   if (!front && !twoSided) return 0.0;
-  vec3 v[kLtcMaxClipped];
-  for (int i = 0; i < n; ++i) v[i] = frame * q[i];
+  vec3 v[kLtcMaxVertices];
+  for (int i = 0; i < kLtcMaxVertices && i < n; ++i) v[i] = frame * q[i];
 #ifdef LTC_HORIZON_SPHERE
   // Heitz 2017: the unclipped polygon's vector form factor F, replaced by a sphere of the same F
   // whose horizon-clipped form factor is tabulated.
-  for (int i = 0; i < n; ++i) v[i] = inverse * v[i];
+  if (!diffuse)
+    for (int i = 0; i < kLtcMaxVertices && i < n; ++i) v[i] = inverse * v[i];
   vec3 f = ltcPolygonVector(v, n);
   if (!front) f = -f; // the back face winds the other way
   float len = length(f);
@@ -55,14 +57,11 @@ float ltcFormFactor(vec3 q[kLtcMaxClipped], int n, mat3 frame, mat3 inverse, boo
   uv = uv * ((uLtcSize - 1.0) / uLtcSize) + 0.5 / uLtcSize;
   return len * texture(uLtcSphere, uv).r;
 #else
-  // Clipped twice: to the surface's horizon (the definition integrates over the shading normal's
-  // hemisphere), then, after M^-1, to the clamped cosine's (the LTC's support, a hemisphere that
-  // M tilts partly below the surface's: without the first clip a light just below the horizon
-  // leaks into the specular term). For M = I the second clip changes nothing.
-  int m = ltcClipToHorizon(v, n);
-  if (m < 3) return 0.0;
-  for (int i = 0; i < m; ++i) v[i] = inverse * v[i];
-  float e = ltcClippedFormFactor(v, m);
+  // The specular term is clipped twice: to the surface's horizon (the definition integrates over
+  // the shading normal's hemisphere), then, after M^-1, to the clamped cosine's (the LTC's
+  // support, a hemisphere that M tilts partly below the surface's: without the first clip a light
+  // just below the horizon leaks into the specular term). The diffuse term needs the first only.
+  float e = diffuse ? ltcClippedPolygonVector(v, n).z : ltcDoublyClippedVector(v, n, inverse).z;
   return twoSided ? abs(e) : max(e, 0.0);
 #endif
 }
@@ -97,11 +96,11 @@ void main() {
     float side = dot(p - light.positionType.xyz, light.directionRange.xyz);
     if (abs(side) < 1e-6) continue;
     bool twoSided = light.spotCos.z > 0.5;
-    vec3 q[kLtcMaxClipped];
+    vec3 q[kLtcMaxVertices];
     ltcRectPolygon(light, p, q);
     vec3 radiance = light.colorIntensity.rgb * light.colorIntensity.w;
-    diffuse += radiance * ltcFormFactor(q, 4, frame, mat3(1.0), side > 0.0, twoSided);
-    specular += radiance * ltcFormFactor(q, 4, frame, inverse, side > 0.0, twoSided);
+    diffuse += radiance * ltcFormFactor(q, 4, frame, inverse, true, side > 0.0, twoSided);
+    specular += radiance * ltcFormFactor(q, 4, frame, inverse, false, side > 0.0, twoSided);
   }
 
   float metallic = albedo.a;

@@ -1,7 +1,8 @@
 #version 450 core
 // The general polygon path of shaders/ltc/polygon.glsl for tests/render/test_ltc_polygon.cpp: one
 // invocation per polygon (3 to kLtcMaxVertices vertices, relative to the shading point, z up)
-// writes its horizon-clipped signed form factor and the vertex count after clipping.
+// writes its horizon-clipped signed form factor, the same through the doubly clipped path with
+// M^-1 = I (the specular path's, which must agree), and the unclipped polygon's.
 layout(local_size_x = 8) in;
 
 #include "ltc/polygon.glsl"
@@ -11,7 +12,7 @@ struct Polygon {
   ivec4 count;                    // x the vertex count
 };
 layout(std430, binding = 0) readonly buffer Polygons { Polygon polygons[]; };
-layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; }; // x form factor, y clipped count
+layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; }; // x clipped, y doubly clipped, z unclipped
 
 uniform int uCount;
 
@@ -19,9 +20,8 @@ void main() {
   int k = int(gl_GlobalInvocationID.x);
   if (k >= uCount) return;
   int n = clamp(polygons[k].count.x, 0, kLtcMaxVertices);
-  vec3 v[kLtcMaxClipped];
+  vec3 v[kLtcMaxVertices];
   for (int i = 0; i < n; ++i) v[i] = polygons[k].vertices[i].xyz;
-  float formFactor = ltcClippedFormFactor(v, n);
-  int m = ltcClipToHorizon(v, n);
-  results[k] = vec4(formFactor, float(m), 0.0, 0.0);
+  results[k] = vec4(ltcClippedPolygonVector(v, n).z, ltcDoublyClippedVector(v, n, mat3(1.0)).z,
+                    ltcPolygonVector(v, n).z, 0.0);
 }
