@@ -63,8 +63,8 @@ public:
                       "resampled from it bilinearly at their own grid points (techniques/ltc/README.md)"),
         ParamSpec::choice("ltc.edge", "Edge integral", {"acos", "rational"}, 1)
             .withFlags(kParamRecompile)
-            .withHelp("Per edge theta/(2 pi sin theta) (a x b): acos = the textbook formula (loses tiny and distant "
-                      "lights where a.b rounds to 1), rational = Heitz's rational fit, no acos"),
+            .withHelp("Per edge theta/(2 pi sin theta) (a x b): acos = the textbook formula (wrong for tiny and distant "
+                      "lights, where a.b is 1 or just below it), rational = Heitz's rational fit, no acos"),
         ParamSpec::choice("ltc.horizon", "Horizon", {"clip", "sphere"}, 0)
             .withFlags(kParamRecompile)
             .withHelp("clip = the polygon clipped exactly to the shading point's horizon (Sutherland-Hodgman); "
