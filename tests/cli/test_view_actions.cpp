@@ -180,3 +180,30 @@ TEST(ViewActions, TheTransparencyLecturesCompareBookmarkMeasuresAgainstTheExactR
   EXPECT_GT(report["reference"]["rmse"].get<double>(), 0.0) << "WBOIT is approximate on layers";
   EXPECT_EQ(report["gl_errors"], 0);
 }
+
+// The area-light lecture (assets/lecture/arealight.json) in the viewer: every bookmark applies
+// without a GL error and has speaker notes, and its compare bookmark (8) measures ltc against the
+// Monte-Carlo arealight reference (not exact: it converges with samples). Each bookmark sets every
+// ltc key and the light's size, so none inherits the tiny light of the bookmark before it (with
+// it the compare measured RMSE 0.89 instead of 0.008).
+TEST(ViewActions, TheArealightLecturesCompareBookmarkMeasuresLtcAgainstTheReference) {
+  const fs::path dir = freshTestDir("view_actions");
+  const fs::path source = fs::path(RTLAB_SOURCE_DIR) / "assets" / "lecture" / "arealight.json";
+  const auto notes = runProcess("/usr/bin/env", {"-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", RTLAB_BINARY, "view",
+                                                 "--bookmarks", source.string(), "--export-notes",
+                                                 (dir / "arealight.md").string()});
+  ASSERT_EQ(notes.exitCode, 0) << notes.err;
+  std::ifstream file(dir / "arealight.md");
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text.find("(no notes)"), std::string::npos) << "arealight.json has a bookmark without notes";
+
+  const auto report = lectureCompareReport("arealight.json", 8);
+  EXPECT_EQ(report["scene"], "arealight");
+  EXPECT_EQ(report["compare"]["mode"], "reference");
+  EXPECT_EQ(report["reference"]["aov"], "arealight");
+  EXPECT_EQ(report["reference"]["exact"], false);
+  ASSERT_TRUE(report["reference"]["rmse"].is_number()) << report.dump(1);
+  EXPECT_GT(report["reference"]["rmse"].get<double>(), 0.0);
+  EXPECT_LT(report["reference"]["rmse"].get<double>(), 0.05) << "ltc on arealight (0.008 measured at 320x180)";
+  EXPECT_EQ(report["gl_errors"], 0);
+}
