@@ -13,7 +13,8 @@ namespace rtlab {
 
 const std::vector<std::string>& builtinSceneNames() {
   static const std::vector<std::string> kNames = {"contact", "stacked", "cornell", "panes",
-                                                  "arealight", "glow", "layers"};
+                                                  "arealight", "glow", "layers",
+                                                  "arealight_ramp"};
   return kNames;
 }
 
@@ -30,6 +31,7 @@ Scene makeBuiltinScene(const std::string& name) {
   if (name == "arealight") return builtin::makeAreaLight();
   if (name == "glow") return builtin::makeGlow();
   if (name == "layers") return builtin::makeLayers();
+  if (name == "arealight_ramp") return builtin::makeAreaLightRamp();
   std::string list;
   for (const std::string& n : builtinSceneNames()) list += (list.empty() ? "" : ", ") + n;
   usageError("unknown scene '" + name + "'" + didYouMean(name, builtinSceneNames()) + " (built-in scenes: " + list + ")");

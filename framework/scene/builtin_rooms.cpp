@@ -1,5 +1,5 @@
 // Built-in scenes for indirect light, transparency and area lights: `cornell`, `panes`,
-// `arealight`. Lighting targets as in builtin_shadow.cpp (key irradiance about 3).
+// `arealight`, `arealight_ramp`. Lighting targets as in builtin_shadow.cpp (key irradiance about 3).
 #include "scene/builtin_scenes.h"
 #include "scene/mesh_builder.h"
 
@@ -73,6 +73,26 @@ Scene makePanes() {
   return b.finish(camera({0, 2.0f, 6.5f}, {0, 1.3f, -0.5f}, 45.0f));
 }
 
+namespace {
+
+Light rectLight(const std::string& name, const glm::vec3& centre, const glm::vec3& emits, const glm::vec3& right,
+                const glm::vec3& up, float width, float height, float nits, bool twoSided) {
+  Light l;
+  l.name = name;
+  l.type = LightType::Rect;
+  l.position = centre;
+  l.direction = emits;
+  l.right = right;
+  l.up = up;
+  l.width = width;
+  l.height = height;
+  l.intensity = nits;
+  l.twoSided = twoSided;
+  return l;
+}
+
+} // namespace
+
 // arealight: a glossy dielectric floor (roughness 0.2) with a sphere and a box under a 2x1
 // rectangular light 2.5 above the floor, facing down. Light 0 is a dimmer shadowed spot (the
 // shadow stage handles directional, spot and point lights only); light 1 is the rectangle, whose
@@ -91,18 +111,43 @@ Scene makeAreaLight() {
   // Light 0: E = 100 * cos(31 deg) / 71 ~ 1.2 at the aim point.
   b.addLight(spotLight("key", {-2.5f, 6.0f, 4.0f}, {0, 0, -0.5f}, 100.0f, 35.0f, 45.0f, 0.1f));
   // Light 1: 10 nits over 2 m^2 at 2.5 gives E ~ 3 below its centre.
-  Light rect;
-  rect.name = "area";
-  rect.type = LightType::Rect;
-  rect.position = glm::vec3(0, 2.5f, -1.0f);
-  rect.direction = glm::vec3(0, -1, 0);
-  rect.right = glm::vec3(1, 0, 0);
-  rect.up = glm::vec3(0, 0, -1);
-  rect.width = 2.0f;
-  rect.height = 1.0f;
-  rect.intensity = 10.0f;
-  b.addLight(rect);
+  b.addLight(rectLight("area", {0, 2.5f, -1.0f}, {0, -1, 0}, {1, 0, 0}, {0, 0, -1}, 2.0f, 1.0f, 10.0f, false));
   return b.finish(camera({0, 1.6f, 7.0f}, {0, 0.5f, -1.0f}, 45.0f));
+}
+
+
+// arealight_ramp: the extremes of an area light on one floor (docs/scene-format.md). Eleven strips
+// along x with perceptual roughness 0, 0.1, ..., 1 (left to right), each split in depth: a grey
+// dielectric half in front (z > -1.5) and a copper metal half behind. A low camera looks along the
+// floor, so the far floor is seen at grazing angles (cos theta_v about 0.06 at its far end).
+// Light 0 is a dim directional key (the shadow stage's light). Light 1: a one-sided 4 x 0.6 strip
+// light 1.5 above the floor, facing down, whose reflection runs down the ramp. Light 2: a two-sided
+// vertical 1.2 x 1.0 light at the back that straddles the floor's plane (y from -0.3 to 0.7), so
+// the floor sees only its upper part: horizon clipping.
+Scene makeAreaLightRamp() {
+  SceneBuilder b("arealight_ramp");
+  constexpr int kStrips = 11;
+  constexpr float kStripWidth = 0.6f, kFront = 4.5f, kSplit = -1.5f, kBack = -6.0f;
+  const float x0 = -0.5f * kStripWidth * kStrips;
+  for (int k = 0; k < kStrips; ++k) {
+    const float roughness = float(k) / float(kStrips - 1);
+    const std::string id = std::to_string(k);
+    Material dielectric = diffuseMaterial("dielectric_r" + id, glm::vec3(0.5f), roughness);
+    Material metal = diffuseMaterial("copper_r" + id, {0.95f, 0.64f, 0.54f}, roughness);
+    metal.metallic = 1.0f;
+    const int dielectricMat = b.addMaterial(dielectric), metalMat = b.addMaterial(metal);
+    const float cx = x0 + (float(k) + 0.5f) * kStripWidth;
+    const float hx = 0.5f * kStripWidth;
+    const float frontZ = 0.5f * (kFront + kSplit), frontH = 0.5f * (kFront - kSplit);
+    const float backZ = 0.5f * (kSplit + kBack), backH = 0.5f * (kSplit - kBack);
+    b.addObject(makeQuad("floor_dielectric_r" + id, {cx, 0, frontZ}, {hx, 0, 0}, {0, 0, -frontH}, 2), dielectricMat);
+    b.addObject(makeQuad("floor_copper_r" + id, {cx, 0, backZ}, {hx, 0, 0}, {0, 0, -backH}, 2), metalMat);
+  }
+
+  b.addLight(directionalLight("key", {-0.3f, -1.0f, -0.5f}, 0.3f, 0.5f));
+  b.addLight(rectLight("strip", {0, 1.5f, -1.5f}, {0, -1, 0}, {1, 0, 0}, {0, 0, -1}, 4.0f, 0.6f, 8.0f, false));
+  b.addLight(rectLight("straddling", {0, 0.2f, -4.5f}, {0, 0, 1}, {1, 0, 0}, {0, 1, 0}, 1.2f, 1.0f, 6.0f, true));
+  return b.finish(camera({0, 0.6f, 4.5f}, {0, 0.0f, -3.0f}, 50.0f));
 }
 
 } // namespace rtlab::builtin

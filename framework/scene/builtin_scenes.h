@@ -38,6 +38,7 @@ Scene makeStacked();
 Scene makeCornell();
 Scene makePanes();
 Scene makeAreaLight();
+Scene makeAreaLightRamp();
 Scene makeLayers();
 Scene makeGlow();
 

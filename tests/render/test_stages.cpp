@@ -18,6 +18,8 @@
 #include "scene/builtin_scenes.h"
 #include "scene/load.h"
 #include "scene/mesh_builder.h"
+#include "techniques/common/arealight/arealight_composite.h"
+#include "frame/frame_view.h"
 #include "shading/base_passes.h"
 
 #include <gtest/gtest.h>
@@ -101,6 +103,22 @@ private:
   TechniqueInfo m_info;
 };
 
+// A fake arealight technique that ends as the real ones do: a constant `arealight` and the
+// family's composite (techniques/common/arealight/arealight_composite.h).
+class FakeAreaCompositeTechnique : public Technique {
+public:
+  explicit FakeAreaCompositeTechnique(TechniqueInfo info) : m_info(std::move(info)) {}
+  const TechniqueInfo& info() const override { return m_info; }
+  void setup(FrameGraph& frame) override {
+    frame.addPass(m_info.id + ".radiance", [&](PassBuilder& b) { b.write(kArealightResource, frameTexture(frame, GL_RGBA16F)); },
+        [](PassContext& ctx) { glClearTexImage(ctx.texture(kArealightResource).id(), 0, GL_RGBA, GL_FLOAT, &kFakeAreaRadiance.x); });
+    addArealightComposite(frame, m_info.id);
+  }
+
+private:
+  TechniqueInfo m_info;
+};
+
 // The built-in techniques plus the fakes.
 const TechniqueRegistry& testRegistry() {
   static const TechniqueRegistry registry = [] {
@@ -110,6 +128,9 @@ const TechniqueRegistry& testRegistry() {
     TechniqueEntry areaAov = test::fakeTechnique("fake_area_aov", "arealight");
     areaAov.create = [info = areaAov.info] { return std::make_unique<FakeAreaAovTechnique>(info); };
     r.add(areaAov);
+    TechniqueEntry areaComposite = test::fakeTechnique("fake_area_composite", "arealight");
+    areaComposite.create = [info = areaComposite.info] { return std::make_unique<FakeAreaCompositeTechnique>(info); };
+    r.add(areaComposite);
     r.add(fakeColor("fake_copy", "post", FakeColor::Copy));
     r.add(fakeColor("fake_fill", "post", FakeColor::Fill, glm::vec4(1, 2, 3, 1)));
     r.add(fakeColor("fake_none", "post", FakeColor::Nothing));
@@ -230,6 +251,56 @@ TEST(ArealightStage, ActiveTechniqueTakesRectLightsAwayFromLighting) {
   EXPECT_GT(lit, kW * kH / 10) << "the rectangle lights the floor below it";
   for (std::size_t i = 0; i < off.pixels.size(); ++i) ASSERT_GE(off.pixels[i], on.pixels[i] - 1e-6f) << i;
   EXPECT_GT(luminanceSum(off), luminanceSum(on));
+}
+
+// The window pixel (x right, y down) where the camera sees world point p.
+glm::ivec2 pixelOf(const Scene& scene, const glm::vec3& p) {
+  const FrameView view = makeFrameView(scene.camera, kW, kH);
+  const glm::vec4 clip = view.viewProj * glm::vec4(p, 1.0f);
+  const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+  return {int((ndc.x * 0.5f + 0.5f) * kW), int((0.5f - ndc.y * 0.5f) * kH)};
+}
+
+// docs/contract.md "Area lights": the emitting face is drawn into `color` only. In `arealight` the
+// camera is below the downward-facing rectangle, so it sees the emitting face against the
+// background: there `color` is L_e (10 nits), data AOVs see the background behind it (A = 0). With
+// an arealight technique the family's composite draws the face (not the lighting pass), adds the
+// technique's radiance on surfaces and nothing on the background.
+TEST(ArealightStage, EmittingFaceIsInColorOnly) {
+  const Scene scene = loadScene("arealight");
+  const Light& rect = scene.lights.at(1);
+  ASSERT_EQ(rect.type, LightType::Rect);
+  const glm::ivec2 face = pixelOf(scene, rect.position);
+  const glm::ivec2 beside = pixelOf(scene, rect.position + rect.right * (0.5f * rect.width + 0.3f));
+  const glm::vec3 le = rect.color * rect.intensity;
+
+  StageRenderer r(scene);
+  for (const std::vector<std::string>& techniques : {std::vector<std::string>{}, std::vector<std::string>{"fake_area_composite"}}) {
+    r.render(techniques, {"color", "depth"}, {"lighting"});
+    const Image color = r.renderer.readAov("color");
+    const Image depth = r.renderer.readAov("depth");
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(color.at(face.x, face.y, c), le[c]) << "face pixel, channel " << c;
+    EXPECT_EQ(depth.mask[std::size_t(face.y) * kW + face.x], 0.0f) << "the face is not in the G-buffer";
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(color.at(beside.x, beside.y, c), 0.0f) << "background beside the face";
+    if (techniques.empty()) continue;
+    ASSERT_TRUE(r.ran("fake_area_composite.composite"));
+    // The lighting pass drew no face (SKIP_RECT_LIGHTS) and the composite added the constant on
+    // surfaces only.
+    const Image lighting = r.renderer.readColor("lighting");
+    EXPECT_EQ(lighting.at(face.x, face.y, 0), 0.0f);
+    int surfaces = 0;
+    for (std::size_t i = 0; i < color.pixelCount(); ++i) {
+      const int x = int(i % kW), y = int(i / kW);
+      const bool onSurface = depth.mask[i] > 0.5f;
+      if (!onSurface && color.at(x, y, 0) > 0.0f) continue; // the face
+      surfaces += onSurface ? 1 : 0;
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(color.at(x, y, c), lighting.at(x, y, c) + (onSurface ? kFakeAreaRadiance[c] : 0.0f),
+                    2e-3f * (1.0f + lighting.at(x, y, c)))
+            << x << "," << y << " channel " << c;
+    }
+    EXPECT_GT(surfaces, kW * kH / 3); // the floor, the sphere and the box: about half the frame
+  }
 }
 
 TEST(ArealightStage, NoRectLightNoStage) {
