@@ -66,8 +66,8 @@ Error errorOf(const Image& got, const Image& ref) {
 
 // The error against a 4096-spp reference falls with the samples (4, 64, 1024): by at least 3x per
 // 16x samples (1/sqrt(N) gives 4x; the stratified pattern does better, measured 7.6x and 8.2x at
-// 160x90), and at 1024 samples it is within 1% of the mean radiance (measured 0.38%), with no bias
-// beyond 0.3% of the mean (measured below 0.05%).
+// 160x90), and at 1024 samples it is within 1% of the mean radiance (measured 0.59%, about half of
+// it the reference's own noise at 4096 spp), with no bias beyond 0.3% of the mean (measured 0.002%).
 TEST(AreaMc, ConvergesToTheReference) {
   const TestFrame base = makeTestFrame("arealight", "area_mc", {}, 96, 54);
   const Image ref = reference(base, 4096);
@@ -78,7 +78,9 @@ TEST(AreaMc, ConvergesToTheReference) {
     const Error e = errorOf(arealight(f), ref);
     std::printf("area_mc samples %d: rmse %.6f (%.3f%% of the mean %.4f), bias %.6f\n", samples, e.rmse,
                 100.0 * e.relative(), e.mean, e.bias);
-    if (previous > 0.0) EXPECT_GT(previous / e.rmse, 3.0) << samples;
+    if (previous > 0.0) {
+      EXPECT_GT(previous / e.rmse, 3.0) << samples;
+    }
     previous = e.rmse;
     if (samples == 1024) {
       EXPECT_LT(e.relative(), 0.01);
@@ -87,15 +89,16 @@ TEST(AreaMc, ConvergesToTheReference) {
   }
 }
 
-// Per roughness (the floor of `arealight` from a mirror to fully rough, metallic 0): with 256
-// samples the error against a 4096-spp reference stays within the measured bound (README
-// "Measured trade-off"); the light-only strategy is far worse on the near-mirror (its fireflies).
+// Per roughness (the floor of `arealight` as a mirror, at 0.5 and fully rough, metallic 0): with 256
+// samples the relative RMSE against a 4096-spp reference stays within 1.7x what was measured (1.79%
+// on the mirror, where the reference's own noise is the larger part, 0.29% and 0.31%); light sampling
+// alone is far worse on the mirror (its fireflies: measured 126%, 70x MIS's).
 TEST(AreaMc, ErrorPerRoughnessWithinTheMeasuredBound) {
   struct Case {
     float roughness;
     double bound; // relative RMSE at 256 samples
   };
-  for (const Case c : {Case{0.0f, 0.02}, Case{0.5f, 0.01}, Case{1.0f, 0.01}}) {
+  for (const Case c : {Case{0.0f, 0.03}, Case{0.5f, 0.005}, Case{1.0f, 0.005}}) {
     const std::string name = "arealight_r" + std::to_string(int(c.roughness * 100));
     TestFrame f = withFloorRoughness(makeTestFrame("arealight", "area_mc", {"area_mc.samples=256"}, 64, 36),
                                      c.roughness, name);
@@ -106,7 +109,9 @@ TEST(AreaMc, ErrorPerRoughnessWithinTheMeasuredBound) {
     std::printf("roughness %.2f: mis %.3f%%, light only %.3f%%\n", c.roughness, 100.0 * mis.relative(),
                 100.0 * light.relative());
     EXPECT_LT(mis.relative(), c.bound) << c.roughness;
-    if (c.roughness == 0.0f) EXPECT_GT(light.relative(), 3.0 * mis.relative());
+    if (c.roughness == 0.0f) {
+      EXPECT_GT(light.relative(), 10.0 * mis.relative());
+    }
   }
 }
 
