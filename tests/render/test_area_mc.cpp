@@ -122,7 +122,8 @@ bool allFinite(const Image& image) {
 }
 
 // 1 and 4096 samples, the roughness at its clamp (0: alpha = 0.045^2), a grazing camera (the floor
-// seen at about 0.6 degrees), both patterns and every strategy: finite and non-negative everywhere.
+// seen at about 0.6 degrees: cos theta_v about 0.01), both patterns and every strategy, and the
+// arealight_ramp scene: finite and non-negative everywhere.
 TEST(AreaMc, ExtremesAreFinite) {
   const TestFrame mirror = withFloorRoughness(makeTestFrame("arealight", "area_mc", {}, 48, 27), 0.0f, "arealight_r0");
   for (const char* pattern : {"stratified", "r2_blue_noise"}) {
@@ -143,6 +144,13 @@ TEST(AreaMc, ExtremesAreFinite) {
   double sum = 0.0;
   for (float v : g.pixels) sum += v;
   EXPECT_GT(sum, 0.0); // the floor under the light is lit
+  // arealight_ramp: mirror to rough strips seen at grazing angles (cos theta_v about 0.06), a
+  // two-sided light straddling the floor's plane.
+  for (const char* strategy : {"mis", "light", "brdf"}) {
+    const TestFrame ramp = makeTestFrame("arealight_ramp", "area_mc",
+                                         {"area_mc.samples=16", std::string("area_mc.strategy=") + strategy}, 96, 54);
+    EXPECT_TRUE(allFinite(arealight(ramp))) << strategy;
+  }
 }
 
 // The light moved below the floor, facing up and two-sided: every surface point whose shading
