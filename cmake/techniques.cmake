@@ -13,6 +13,8 @@ file(GLOB _technique_dirs LIST_DIRECTORIES true CONFIGURE_DEPENDS ${CMAKE_SOURCE
 # Watch every technique source too, so a folder that gains its <id>.cpp later re-runs configure.
 file(GLOB _technique_watch CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/techniques/*/*.cpp)
 file(GLOB_RECURSE RTLAB_TECHNIQUE_SOURCES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/techniques/common/*.cpp)
+# GL-free family code is compiled once into rtlab_family_core (CMakeLists.txt), not here.
+list(REMOVE_ITEM RTLAB_TECHNIQUE_SOURCES ${RTLAB_FAMILY_CORE_SOURCES})
 set(_decls "")
 set(_calls "")
 set(_reference_decls "")

@@ -10,7 +10,8 @@
 namespace rtlab {
 
 Args::Args(const std::string& command, const std::vector<OptionSpec>& specs, int argc, char** argv, int first,
-           int maxPositionals) {
+           int maxPositionals, const std::string& program) {
+  const std::string invocation = command.empty() ? program : program + " " + command;
   for (int i = first; i < argc; ++i) {
     std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
@@ -31,7 +32,7 @@ Args::Args(const std::string& command, const std::vector<OptionSpec>& specs, int
       const OptionSpec* spec = nullptr;
       for (const auto& s : specs)
         if (s.name == arg || (!s.alias.empty() && s.alias == arg)) spec = &s;
-      if (!spec) usageError("unknown option '" + arg + "' for 'rtlab " + command + "' (see 'rtlab " + command + " --help')");
+      if (!spec) usageError("unknown option '" + arg + "' for '" + invocation + "' (see '" + invocation + " --help')");
       if (spec->takesValue && !inlineValue) {
         if (i + 1 >= argc) usageError("option '" + arg + "' needs a value (" + spec->valueName + ")");
         value = argv[++i];
@@ -43,7 +44,7 @@ Args::Args(const std::string& command, const std::vector<OptionSpec>& specs, int
       continue;
     }
     if (int(m_positionals.size()) >= maxPositionals)
-      usageError("unexpected argument '" + arg + "' for 'rtlab " + command + "' (see 'rtlab " + command + " --help')");
+      usageError("unexpected argument '" + arg + "' for '" + invocation + "' (see '" + invocation + " --help')");
     m_positionals.push_back(arg);
   }
 }

@@ -19,8 +19,10 @@ class Args {
 public:
   // Parses argv[first..]; `--help`/`-h` sets help(). Error(Usage) for unknown options, a missing
   // value, or positionals beyond maxPositionals.
+  // Messages name the invocation "<program> <command>" ("rtlab render"; a tool of its own passes
+  // its program name and an empty command).
   Args(const std::string& command, const std::vector<OptionSpec>& specs, int argc, char** argv, int first,
-       int maxPositionals = 0);
+       int maxPositionals = 0, const std::string& program = "rtlab");
 
   bool help() const { return m_help; }
   bool has(const std::string& name) const { return m_values.count(name) != 0; }

@@ -1,26 +1,18 @@
 // rtlab: the command-line entry point. Every failure is one line on stderr beginning
 // "rtlab: error:" and a documented exit code (docs/contract.md "Exit codes").
 #include "app/commands.h"
-#include "util/atomic_file.h"
+#include "util/interrupt.h"
 #include "util/error.h"
 #include "util/version.h"
 
 #include <unistd.h>
 
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <string>
 
 namespace {
-
-void onInterrupt(int) {
-  rtlab::removeTemporaries();
-  static const char kMsg[] = "rtlab: error: interrupted\n";
-  [[maybe_unused]] auto n = ::write(2, kMsg, sizeof(kMsg) - 1);
-  ::_exit(int(rtlab::ExitCode::Interrupted));
-}
 
 const char* kUsage =
     "Usage: rtlab <command> [options]\n\n"
@@ -40,8 +32,7 @@ const char* kUsage =
 } // namespace
 
 int main(int argc, char** argv) {
-  std::signal(SIGINT, onInterrupt);
-  std::signal(SIGTERM, onInterrupt);
+  rtlab::installInterruptHandler();
   using namespace rtlab;
   try {
     if (argc < 2) {
