@@ -69,7 +69,6 @@ float misWeight(float pdf, float otherPdf) {
   float r = otherPdf / pdf;
   return 1.0 / (1.0 + r * r);
   // exercise: stub
-  // // Stub: a neutral value so that the program compiles and runs. Replace it with your code.
   // return 0.0;
   // exercise: end
 }
@@ -92,7 +91,6 @@ vec3 lightSample(vec3 p, vec3 n, vec3 v, vec3 baseColor, float metallic, float r
   float pdf = dist2 / (light.width * light.height * cosLight);
   return misWeight(pdf, ggxReflectionPdf(n, v, l, alpha)) * f * light.radiance / pdf;
   // exercise: stub
-  // // Stub: a neutral value so that the program compiles and runs. Replace it with your code.
   // return vec3(0.0);
   // exercise: end
 }

@@ -131,7 +131,7 @@ TEST(CliReference, UnknownAovNamesTheRegisteredChoices) {
   const auto bogus = runProcess(RTLAB_BINARY, {"reference", "--aov", "bogus", "--size", "8x8", "--out", out});
   EXPECT_EQ(bogus.exitCode, 2) << bogus.err;
   EXPECT_EQ(rtlab::test::lineCount(bogus.err), 1) << bogus.err;
-  EXPECT_NE(bogus.err.find("rtlab: error: unknown reference AOV 'bogus' (choices: visibility, ao, indirect, transparency, bloom)"),
+  EXPECT_NE(bogus.err.find("rtlab: error: unknown reference AOV 'bogus' (choices: visibility, ao, indirect, transparency, arealight, bloom)"),
             std::string::npos)
       << bogus.err;
   const auto typo = runProcess(RTLAB_BINARY, {"reference", "--aov", "visibilty", "--size", "8x8", "--out", out});
@@ -242,6 +242,62 @@ TEST(CliReference, TransparencyIsExactOverAndTheOpaqueColourWithoutLayers) {
                                              "--out", (dir / "x.exr").string()});
   EXPECT_EQ(spp.exitCode, 2);
   EXPECT_FALSE(fs::exists(dir / "x.exr"));
+}
+
+// `--aov arealight` (docs/contract.md "Area lights", docs/measuring.md "The arealight reference"):
+// three channels, 0 with A = 0 on the background, the same file for the same seed, another image for
+// another seed, 0 on every pixel of a scene without a rectangular light, and --spp outside 1..131072
+// refused with one line and no file.
+std::vector<std::string> arealightArgs(const std::string& scene, const std::string& seed, const fs::path& out) {
+  return {"reference", "--scene", scene, "--size", "48x27", "--aov", "arealight", "--spp", "16", "--seed", seed, "--out",
+          out.string()};
+}
+
+TEST(CliArealightReference, DeterministicMaskedAndZeroWithoutARectLight) {
+  const fs::path dir = testDir("arealight-run");
+  ASSERT_EQ(runProcess(RTLAB_BINARY, arealightArgs("arealight", "3", dir / "a.exr")).exitCode, 0);
+  ASSERT_EQ(runProcess(RTLAB_BINARY, arealightArgs("arealight", "3", dir / "b.exr")).exitCode, 0);
+  ASSERT_EQ(runProcess(RTLAB_BINARY, arealightArgs("arealight", "4", dir / "c.exr")).exitCode, 0);
+  EXPECT_EQ(slurp(dir / "a.exr"), slurp(dir / "b.exr"));
+  const rtlab::Image a = rtlab::readImage((dir / "a.exr").string());
+  const rtlab::Image c = rtlab::readImage((dir / "c.exr").string());
+  EXPECT_NE(a.pixels, c.pixels);
+  ASSERT_EQ(a.channels, 3);
+  ASSERT_TRUE(a.hasMask());
+  int surface = 0, lit = 0;
+  for (std::size_t i = 0; i < a.pixelCount(); ++i) {
+    const float sum = a.pixels[i * 3] + a.pixels[i * 3 + 1] + a.pixels[i * 3 + 2];
+    if (a.mask[i] < 0.5f) {
+      EXPECT_EQ(sum, 0.0f) << i;
+      continue;
+    }
+    ++surface;
+    lit += sum > 0.0f ? 1 : 0;
+  }
+  EXPECT_GT(surface, 48 * 27 / 3); // the floor, the sphere and the box (the sky above them: background)
+  EXPECT_GT(lit, surface / 2); // the floor, the sphere and the box face the light
+
+  // cornell has no rectangular light: the stage's neutral value, 0, on every surface pixel.
+  ASSERT_EQ(runProcess(RTLAB_BINARY, arealightArgs("cornell", "1", dir / "cornell.exr")).exitCode, 0);
+  const rtlab::Image none = rtlab::readImage((dir / "cornell.exr").string());
+  for (float v : none.pixels) ASSERT_EQ(v, 0.0f);
+  int covered = 0;
+  for (float m : none.mask) covered += m > 0.5f ? 1 : 0;
+  EXPECT_GT(covered, 0);
+}
+
+TEST(CliArealightReference, SppOutsideItsRangeIsAUsageError) {
+  const fs::path dir = testDir("arealight-bad");
+  for (const char* spp : {"0", "131073"}) {
+    auto a = arealightArgs("arealight", "1", dir / "x.exr");
+    a[8] = spp;
+    const auto r = runProcess(RTLAB_BINARY, a);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(rtlab::test::lineCount(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("rtlab: error:", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find("--spp"), std::string::npos) << r.err;
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
 }
 
 } // namespace

@@ -107,8 +107,8 @@ TEST(ReferenceInputs, PrePostColorIsTheFramesColourBeforePost) {
 
 TEST(ReferenceInputs, TheProcessRegistryHoldsTheBuiltins) {
   const ReferenceRegistry& r = ReferenceRegistry::instance();
-  EXPECT_EQ(r.choices(), "visibility, ao, indirect, transparency, bloom");
-  for (const char* stage : {"shadow", "ao", "indirect", "post"}) EXPECT_NE(r.findStage(stage), nullptr) << stage;
+  EXPECT_EQ(r.choices(), "visibility, ao, indirect, transparency, arealight, bloom");
+  for (const char* stage : {"shadow", "ao", "indirect", "transparency", "arealight", "post"}) EXPECT_NE(r.findStage(stage), nullptr) << stage;
 }
 
 } // namespace
