@@ -13,22 +13,12 @@
 #   bash bench/arealight_tradeoff.sh [RTLAB] [SIZE] [FRAMES] [SCENE] [REFSPP] [SAMPLES]
 set -euo pipefail
 rtlab=$(realpath "${1:-build/rtlab}") size=${2:-1280x720} frames=${3:-5} scene=${4:-arealight}
-refspp=${5:-4096} samples=${6:-"1 2 4 8 16 32 64 128 256"}
+refspp=${5:-1024} samples=${6:-"1 2 4 8 16 32 64 128 256"}
 py=/usr/bin/python3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# ms and bytes of technique $2's passes and resources in stats JSON $1.
-cost() {
-  $py - "$1" "$2" <<'PYEOF'
-import json, sys
-d = json.load(open(sys.argv[1])); t = sys.argv[2]
-ms = sum(p["ms"] for p in d["passes"] if p.get("technique") == t)
-b = sum(r["bytes"] for r in d["resources"] if r["name"].startswith(t + ".") or r.get("technique") == t)
-print("%.3f,%d" % (ms, b))
-PYEOF
-}
-metric() { "$rtlab" compare "$1" "$2" | awk -v k="$3" '$1 == k {print $2}'; }
+source "$(dirname "$0")/tradeoff_common.sh"
 
 common=(--scene "$scene" --size "$size")
 ref=$tmp/ref.exr

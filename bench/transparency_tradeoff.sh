@@ -19,17 +19,7 @@ py=/usr/bin/python3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# ms and bytes of technique $2's passes and resources in stats JSON $1.
-cost() {
-  $py - "$1" "$2" <<'PYEOF'
-import json, sys
-d = json.load(open(sys.argv[1])); t = sys.argv[2]
-ms = sum(p["ms"] for p in d["passes"] if p.get("technique") == t)
-b = sum(r["bytes"] for r in d["resources"] if r["name"].startswith(t + ".") or r.get("technique") == t)
-print("%.3f,%d" % (ms, b))
-PYEOF
-}
-metric() { "$rtlab" compare "$1" "$2" | awk -v k="$3" '$1 == k {print $2}'; }
+source "$(dirname "$0")/tradeoff_common.sh"
 
 {
 echo "scene,technique,setting,ms,bytes,rmse,max_abs"
