@@ -2,8 +2,7 @@
 // error falls with the samples at least like 1/sqrt(N), and with many samples it is within a
 // measured bound per roughness), its extremes are finite, a light below the horizon adds nothing, and
 // without the technique or without a rectangular light it allocates nothing.
-#include "app/reference_run.h"
-#include "render_fixture.h"
+#include "arealight_fixture.h"
 
 #include <gtest/gtest.h>
 
@@ -15,55 +14,11 @@
 namespace rtlab {
 namespace {
 
-// The floor's roughness changed (a new scene name: the fixture shares renderers per name).
-TestFrame withFloorRoughness(TestFrame f, float roughness, const std::string& name) {
-  bool found = false;
-  for (Material& m : f.scene.materials)
-    if (m.name == "floor") {
-      m.roughness = roughness;
-      found = true;
-    }
-  EXPECT_TRUE(found);
-  f.scene.name = name;
-  return f;
-}
-
-Image arealight(const TestFrame& f) {
-  const TestRender r = renderTestFrame(f, {"arealight"});
-  EXPECT_EQ(r.glErrors, 0);
-  return r.renderer->readAov("arealight");
-}
-
-Image reference(const TestFrame& f, int spp) {
-  TestRender r = renderTestFrame(f, {"arealight"});
-  return renderReferenceFrame(*r.renderer, resolvedOf(f), "arealight", spp, false);
-}
-
-struct Error {
-  double rmse = 0.0, mean = 0.0, bias = 0.0; // over the reference's surface pixels, every channel
-  double relative() const { return rmse / mean; }
-};
-
-Error errorOf(const Image& got, const Image& ref) {
-  EXPECT_EQ(got.width, ref.width);
-  EXPECT_EQ(got.channels, 3);
-  Error e;
-  double n = 0.0, sum2 = 0.0, diff = 0.0, sum = 0.0;
-  for (std::size_t i = 0; i < ref.pixelCount(); ++i) {
-    if (ref.mask[i] < 0.5f) continue;
-    for (int c = 0; c < 3; ++c) {
-      const double a = got.pixels[i * 3 + c], b = ref.pixels[i * 3 + c];
-      sum2 += (a - b) * (a - b);
-      diff += a - b;
-      sum += b;
-      n += 1.0;
-    }
-  }
-  e.rmse = std::sqrt(sum2 / n);
-  e.mean = sum / n;
-  e.bias = diff / n;
-  return e;
-}
+using test::withFloorRoughness;
+Image arealight(const TestFrame& f) { return test::arealightAov(f); }
+Image reference(const TestFrame& f, int spp) { return test::arealightReference(f, spp); }
+using Error = test::ArealightError;
+Error errorOf(const Image& got, const Image& ref) { return test::arealightError(got, ref); }
 
 // The error against a 4096-spp reference falls with the samples (4, 64, 1024): by at least 3x per
 // 16x samples (1/sqrt(N) gives 4x; the stratified pattern does better, measured 7.6x and 8.2x at
