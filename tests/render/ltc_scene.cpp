@@ -1,5 +1,7 @@
 #include "ltc_scene.h"
 
+#include "rect_quadrature.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -69,34 +71,8 @@ double lambertFormFactor(const Light& light, const glm::dvec3& p, const glm::dve
 
 glm::dvec3 brdfIntegral(const Light& light, const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& v,
                         const brdf::Material& m, int cells, bool diffuseOnly) {
-  const int nx = cells, ny = std::max(1, cells / 2);
-  const glm::dvec3 c(light.position), r(light.right), u(light.up), d(light.direction);
-  const double dA = double(light.width) * light.height / (double(nx) * ny);
-  const glm::dvec3 le = glm::dvec3(light.color) * double(light.intensity);
-  glm::dvec3 sum(0.0);
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const glm::dvec3 x = c + r * (((i + 0.5) / nx - 0.5) * light.width) + u * (((j + 0.5) / ny - 0.5) * light.height);
-      const glm::dvec3 toX = x - p;
-      const double dist2 = glm::dot(toX, toX);
-      const glm::dvec3 l = toX / std::sqrt(dist2);
-      const double cosE = light.twoSided ? std::abs(glm::dot(-l, d)) : std::max(glm::dot(-l, d), 0.0);
-      const double dOmega = dA * cosE / dist2;
-      if (dOmega <= 0.0) continue;
-      glm::dvec3 f;
-      if (diffuseOnly) {
-        const double nDotL = glm::dot(n, l);
-        if (nDotL <= 0.0) continue;
-        const glm::dvec3 h = glm::normalize(l + v);
-        const glm::dvec3 f0 = glm::mix(glm::dvec3(brdf::kDielectricF0), m.baseColor, m.metallic);
-        const glm::dvec3 fresnel = f0 + (1.0 - f0) * brdf::schlickWeight(std::max(glm::dot(v, h), 0.0));
-        f = (1.0 - fresnel) * (1.0 - m.metallic) * m.baseColor / brdf::kPi * nDotL;
-      } else {
-        f = brdf::evaluateBrdfCos(n, v, l, m);
-      }
-      sum += le * f * dOmega;
-    }
-  return sum;
+  return test::rectQuadrature(area_mc::rectLightFrom(light), p, n, v, m, cells, std::max(1, cells / 2),
+                              diffuseOnly ? test::BrdfTerm::Diffuse : test::BrdfTerm::Full);
 }
 
 LtcRenderer::LtcRenderer(const Scene& s) : scene(s) {

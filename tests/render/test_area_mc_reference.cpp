@@ -3,6 +3,7 @@
 // noise falls like 1/sqrt(spp), and the cases with a known answer hold (below the horizon 0, a
 // one-sided light seen from behind 0, two-sided = mirrored, far away = the point light).
 #include "reference/light_model.h"
+#include "rect_quadrature.h"
 #include "techniques/area_mc/area_mc_model.h"
 
 #include <gtest/gtest.h>
@@ -38,25 +39,9 @@ ShadingPoint floorPoint(glm::dvec3 p, glm::dvec3 eye, double roughness, double m
   return x;
 }
 
-// The integral as an area integral, L_e f cos(theta) cos(theta') / r^2 dA, by the midpoint rule on a
-// k x k grid over the rectangle: shares no code with the estimator but the BRDF.
+// The integral by the midpoint rule on a k x k grid over the rectangle (tests/render/rect_quadrature.h).
 glm::dvec3 quadrature(const ShadingPoint& x, const RectLight& light, int k) {
-  glm::dvec3 sum(0.0);
-  const double cell = light.area() / (double(k) * double(k));
-  for (int j = 0; j < k; ++j) {
-    for (int i = 0; i < k; ++i) {
-      const glm::dvec3 q = light.center + ((i + 0.5) / k - 0.5) * light.width * light.right +
-                           ((j + 0.5) / k - 0.5) * light.height * light.up;
-      const glm::dvec3 d = q - x.position;
-      const double r2 = glm::dot(d, d);
-      const glm::dvec3 l = d / std::sqrt(r2);
-      double cosLight = -glm::dot(l, light.normal);
-      if (light.twoSided) cosLight = std::abs(cosLight);
-      if (cosLight <= 0.0) continue;
-      sum += light.radiance * brdf::evaluateBrdfCos(x.normal, x.toViewer, l, x.material) * cosLight / r2 * cell;
-    }
-  }
-  return sum;
+  return test::rectQuadrature(light, x.position, x.normal, x.toViewer, x.material, k, k);
 }
 
 glm::dvec3 estimate(const ShadingPoint& x, const RectLight& light, int spp, unsigned seed, bool stratified = true,
