@@ -7,8 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace rtlab::test {
 
@@ -61,6 +63,33 @@ inline ArealightError arealightError(const Image& got, const Image& ref) {
   e.mean = sum / n;
   e.bias = diff / n;
   return e;
+}
+
+// The relative RMSE (rmse / mean radiance of the reference) of `got` against `ref` per roughness
+// of arealight_ramp's strips: bin b holds the surface pixels whose G-buffer roughness (as the
+// reference reads it) rounds to b / 10; `values` counts the channel values of each bin.
+struct RoughnessBin {
+  double values = 0.0, relative = 0.0;
+};
+inline std::vector<RoughnessBin> errorPerRoughness(const TestFrame& f, const Image& got, const Image& ref) {
+  TestRender r = renderTestFrame(f, {"arealight"});
+  const ReferenceInput input = referenceInput(*r.renderer, resolvedOf(f));
+  constexpr int kBins = 11;
+  std::vector<double> err2(kBins, 0.0), sum(kBins, 0.0);
+  std::vector<RoughnessBin> bins(kBins);
+  for (std::size_t i = 0; i < ref.pixelCount(); ++i) {
+    if (ref.mask[i] < 0.5f) continue;
+    const int bin = std::clamp(int(std::lround(input.surfaces.roughness[i] * 10.0f)), 0, kBins - 1);
+    for (int c = 0; c < 3; ++c) {
+      const double d = double(got.pixels[i * 3 + c]) - ref.pixels[i * 3 + c];
+      err2[bin] += d * d;
+      sum[bin] += ref.pixels[i * 3 + c];
+      bins[bin].values += 1.0;
+    }
+  }
+  for (int b = 0; b < kBins; ++b)
+    if (bins[b].values > 0.0) bins[b].relative = std::sqrt(err2[b] / bins[b].values) / (sum[b] / bins[b].values);
+  return bins;
 }
 
 } // namespace rtlab::test

@@ -80,24 +80,11 @@ TEST(AreaMc, ErrorPerRoughnessOnTheRamp) {
   const TestFrame f = makeTestFrame("arealight_ramp", "area_mc", {"area_mc.samples=256"}, 96, 54);
   const Image ref = reference(f, 2048);
   const Image got = arealight(f);
-  TestRender r = renderTestFrame(f, {"arealight"});
-  const ReferenceInput input = referenceInput(*r.renderer, resolvedOf(f));
-  constexpr int kBins = 11;
-  std::vector<double> err2(kBins, 0.0), sum(kBins, 0.0), count(kBins, 0.0);
-  for (std::size_t i = 0; i < ref.pixelCount(); ++i) {
-    if (ref.mask[i] < 0.5f) continue;
-    const int bin = std::clamp(int(std::lround(input.surfaces.roughness[i] * 10.0f)), 0, kBins - 1);
-    for (int c = 0; c < 3; ++c) {
-      const double d = double(got.pixels[i * 3 + c]) - ref.pixels[i * 3 + c];
-      err2[bin] += d * d;
-      sum[bin] += ref.pixels[i * 3 + c];
-      count[bin] += 1.0;
-    }
-  }
-  for (int b = 0; b < kBins; ++b) {
-    if (count[b] < 150.0) continue; // too few pixels of that strip in view
-    const double relative = std::sqrt(err2[b] / count[b]) / (sum[b] / count[b]);
-    std::printf("ramp roughness %.1f: %5.0f values, relative rmse %.3f%%\n", b / 10.0, count[b], 100.0 * relative);
+  const std::vector<test::RoughnessBin> bins = test::errorPerRoughness(f, got, ref);
+  for (int b = 0; b < int(bins.size()); ++b) {
+    if (bins[b].values < 150.0) continue; // too few pixels of that strip in view
+    const double relative = bins[b].relative;
+    std::printf("ramp roughness %.1f: %5.0f values, relative rmse %.3f%%\n", b / 10.0, bins[b].values, 100.0 * relative);
     // The central strips (0.3 to 0.6) hold the light that meets the floor: points next to that line
     // see it at r -> 0, where the area estimator's r^2 / cos(theta') varies most.
     const double bound = (b == 4 || b == 5) ? 0.06 : (b == 3 || b == 6) ? 0.025 : 0.015;
