@@ -1,6 +1,7 @@
 #include "app/exercise_runner.h"
 
 #include "app/child_process.h"
+#include "image/raw_image.h"
 #include "util/error.h"
 
 #include <fcntl.h>
@@ -76,23 +77,6 @@ Worker startWorker(const std::string& request) {
   return Worker{pid, out[0], err[0]};
 }
 
-// Bytes of one image as the worker sends it: the floats, then the mask when there is one.
-std::size_t imageBytes(const nlohmann::json& shape) {
-  const std::size_t w = shape.at(0).get<std::size_t>(), h = shape.at(1).get<std::size_t>(),
-                    c = shape.at(2).get<std::size_t>();
-  return (w * h * c + (shape.at(3).get<bool>() ? w * h : 0)) * sizeof(float);
-}
-
-Image takeImage(const nlohmann::json& shape, const char* bytes) {
-  Image image(shape.at(0).get<int>(), shape.at(1).get<int>(), shape.at(2).get<int>());
-  std::memcpy(image.pixels.data(), bytes, image.pixels.size() * sizeof(float));
-  if (shape.at(3).get<bool>()) {
-    image.mask.resize(image.pixelCount());
-    std::memcpy(image.mask.data(), bytes + image.pixels.size() * sizeof(float), image.mask.size() * sizeof(float));
-  }
-  return image;
-}
-
 // Parses complete results at the front of `buffer` into `runs`; returns how many it took.
 std::size_t takeResults(std::string& buffer, std::vector<ViewRun>& runs, std::vector<bool>& done) {
   std::size_t taken = 0;
@@ -101,8 +85,8 @@ std::size_t takeResults(std::string& buffer, std::vector<ViewRun>& runs, std::ve
     if (eol == std::string::npos) return taken;
     const nlohmann::json header = nlohmann::json::parse(buffer.substr(0, eol));
     std::size_t need = eol + 1;
-    if (header.contains("image")) need += imageBytes(header["image"]);
-    if (header.contains("reference")) need += imageBytes(header["reference"]);
+    if (header.contains("image")) need += rawImageBytes(header["image"]);
+    if (header.contains("reference")) need += rawImageBytes(header["reference"]);
     if (buffer.size() < need) return taken;
     const std::size_t i = header.at("view").get<std::size_t>();
     ViewRun& run = runs.at(i);
@@ -111,12 +95,13 @@ std::size_t takeResults(std::string& buffer, std::vector<ViewRun>& runs, std::ve
     run.message = header.value("message", "");
     run.ms = header.value("ms", 0.0);
     run.code = header.value("code", 0);
+    run.driver = header.value("gl", "");
     std::size_t at = eol + 1;
     if (header.contains("image")) {
-      run.image = takeImage(header["image"], buffer.data() + at);
-      at += imageBytes(header["image"]);
+      run.image = rawImageFrom(header["image"], buffer.data() + at);
+      at += rawImageBytes(header["image"]);
     }
-    if (header.contains("reference")) run.reference = takeImage(header["reference"], buffer.data() + at);
+    if (header.contains("reference")) run.reference = rawImageFrom(header["reference"], buffer.data() + at);
     done.at(i) = true;
     buffer.erase(0, need);
     ++taken;

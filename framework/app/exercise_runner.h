@@ -20,6 +20,7 @@ struct ViewRun {
   double ms = 0.0;
   Image image;
   Image reference;     // when the request asked for references
+  std::string driver;  // the worker's GL driver when it rendered (driverName)
 };
 
 // Runs the request's views (all of them; request.first is ignored) in workers, `timeLimitSeconds`

@@ -7,6 +7,7 @@
 #include "app/reference_run.h"
 #include "exercise/exercise_folder.h"
 #include "frame/registry.h"
+#include "image/raw_image.h"
 #include "platform/context.h"
 #include "reference/reference_registry.h"
 #include "render/renderer.h"
@@ -29,24 +30,20 @@ const char* filesName(WorkerFiles f) {
   return "solution";
 }
 
-nlohmann::json shape(const Image& image) {
-  return nlohmann::json::array({image.width, image.height, image.channels, image.hasMask()});
-}
-
-void writeImage(const Image& image) {
-  std::fwrite(image.pixels.data(), sizeof(float), image.pixels.size(), stdout);
-  if (image.hasMask()) std::fwrite(image.mask.data(), sizeof(float), image.mask.size(), stdout);
-}
-
 void send(const nlohmann::json& header, const Image* image, const Image* reference) {
-  const std::string line = header.dump() + "\n";
-  std::fwrite(line.data(), 1, line.size(), stdout);
-  if (image) writeImage(*image);
-  if (reference) writeImage(*reference);
+  std::string bytes = header.dump() + "\n";
+  if (image) appendRawImage(bytes, *image);
+  if (reference) appendRawImage(bytes, *reference);
+  std::fwrite(bytes.data(), 1, bytes.size(), stdout);
   std::fflush(stdout);
 }
 
 } // namespace
+
+std::string driverName(const Context& context) {
+  const GlInfo& info = context.info();
+  return context.backendName() + " | " + info.vendor + " | " + info.renderer + " | " + info.version;
+}
 
 nlohmann::json workerRequestJson(const WorkerRequest& r) {
   return {{"exercise", r.exercise}, {"files", filesName(r.files)}, {"dir", r.dir}, {"aov", r.aov},
@@ -111,12 +108,13 @@ int runExerciseWorker() {
       const Image image = renderer->readAov(request.aov);
       header["ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       header["status"] = "ok";
-      header["image"] = shape(image);
+      header["image"] = rawImageShape(image);
+      header["gl"] = driverName(*context);
       Image reference;
       if (request.references) {
         const ReferenceEntry& entry = ReferenceRegistry::instance().get(request.aov);
         reference = renderReferenceFrame(*renderer, frame, entry.aov, view.spp > 0 ? view.spp : entry.defaultSpp, false);
-        header["reference"] = shape(reference);
+        header["reference"] = rawImageShape(reference);
       }
       send(header, &image, request.references ? &reference : nullptr);
     } catch (const Error& e) {

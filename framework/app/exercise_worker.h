@@ -7,6 +7,7 @@
 #include "app/frame_options.h"
 #include "exercise/exercise_def.h"
 #include "image/image.h"
+#include "platform/context.h"
 
 #include <nlohmann/json.hpp>
 
@@ -33,10 +34,14 @@ WorkerRequest workerRequestFromJson(const nlohmann::json& j);
 
 // One view as a resolved frame: its scene and frame options go through the command line's parser,
 // so a bad key or value is the same Error(Usage) as on the command line.
+// "backend | vendor | renderer | version" of a context: renders on another driver may differ.
+std::string driverName(const Context& context);
+
 ResolvedFrame resolveViewFrame(const ExerciseView& view, const std::string& technique, const std::string& backend);
 
 // The result header of one view: {"view": i, "status": "ok"|"compile_error"|"error", "message",
-// "ms", "image": [w, h, channels, mask], "reference": [w, h, channels, mask] (when sent)}.
+// "ms", "image": [w, h, channels, mask], "reference": [w, h, channels, mask] (when sent), "gl": the
+// driver that rendered it (driverName; the grade cache's key, app/exercise_grade_cache.h)}.
 int runExerciseWorker();
 
 } // namespace rtlab
