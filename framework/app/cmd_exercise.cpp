@@ -19,13 +19,14 @@
 
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 namespace rtlab {
 namespace fs = std::filesystem;
 namespace {
 
 const char* kUsage = "rtlab exercise list [--json] | new ID --out DIR | grade DIR [--json] [--report OUTDIR] [--views FILE]\n"
-                     "                      [--time-limit S] [--backend auto|egl|osmesa]";
+                     "                      [--time-limit S] [--backend auto|egl|osmesa] [--cache CACHEDIR]";
 
 int runExerciseList(int argc, char** argv) {
   const std::vector<OptionSpec> specs = {{"--json", "", false, "", "print JSON (docs/contract.md)"}};
@@ -98,10 +99,11 @@ int runExerciseGrade(int argc, char** argv) {
       {"--report", "", true, "OUTDIR", "write index.html, a page per view and grade.json into OUTDIR"},
       {"--views", "", true, "FILE", "grade these views ({\"schema\": 1, \"views\": [...]}) instead of the exercise's"},
       {"--time-limit", "", true, "S", "seconds each view of the student's may take (default: the exercise's)"},
-      {"--backend", "", true, "B", "headless context of the renders: auto, egl or osmesa (default auto)"}};
+      {"--backend", "", true, "B", "headless context of the renders: auto, egl or osmesa (default auto)"},
+      {"--cache", "", true, "CACHEDIR", "keep the solution's and the stubs' renders in CACHEDIR and reuse them (created if missing)"}};
   Args args("exercise grade", specs, argc, argv, 3, 1);
   if (args.help()) {
-    std::cout << formatHelp("rtlab exercise grade DIR [--json] [--report OUTDIR] [--views FILE] [--time-limit S]",
+    std::cout << formatHelp("rtlab exercise grade DIR [--json] [--report OUTDIR] [--views FILE] [--time-limit S] [--cache CACHEDIR]",
                             "Renders the exercise's test views with DIR's files, the solution's and the stubs' (each in\n"
                             "a child process with a time limit), compares each view with the solution and the reference,\n"
                             "and prints the score. Exit 0 when grading completed, passed or not; 5 when a student file\n"
@@ -144,7 +146,14 @@ int runExerciseGrade(int argc, char** argv) {
     checkReportFolder(report);
   }
   options.keepImages = !report.empty();
-  options.progress = ::isatty(STDERR_FILENO) == 1;
+  // With a cache, the phase lines say what came from it (docs/exercises.md "The grade cache").
+  std::optional<GradeCache> cache;
+  if (args.has("--cache")) {
+    if (args.get("--cache").empty()) usageError("--cache needs a folder");
+    cache.emplace(args.get("--cache"));
+    options.cache = &*cache;
+  }
+  options.progress = ::isatty(STDERR_FILENO) == 1 || cache;
 
   const GradeResult result = gradeExercise(folder, options);
   if (!report.empty()) writeGradeReport(report, folder, options, result);

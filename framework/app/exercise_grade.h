@@ -3,6 +3,7 @@
 // with the reference (informative), and gives the per-view status, cause and the score.
 #pragma once
 #include "exercise/exercise_folder.h"
+#include "exercise/grade_cache.h"
 #include "exercise/view_compare.h"
 #include "image/image.h"
 
@@ -21,6 +22,7 @@ struct GradeOptions {
   std::string backend = "auto";
   bool keepImages = false;  // keep the images for the report
   bool progress = false;    // a line per phase on stderr
+  const GradeCache* cache = nullptr; // --cache: the solution's and stubs' renders (docs/exercises.md "The grade cache")
 };
 
 struct ViewGrade {

@@ -1,10 +1,12 @@
 // rtlab exercise through the binary (docs/exercises.md, docs/contract.md "Exercises"): for every
 // exercise, the untouched student folder fails with a low score and the "stub" cause, the shipped
 // solution copied into it scores 100, and each deliberate mistake of tests/exercises/mutations.json
-// fails. Then the safety rules: an endless loop times out and grading completes, a syntax error is
+// fails (these grades share a grade cache: the solution and the stubs render once per build;
+// test_exercise_cache.cpp checks that a cached grade equals a fresh one). Then the safety rules: an endless loop times out and grading completes, a syntax error is
 // exit 5 naming the student's file:line, `new` never overwrites, a folder that is not an exercise is
 // exit 3, nothing is written outside the output folder, and the grade is the same on EGL and OSMesa.
 #include "chromium.h"
+#include "exercise_helpers.h"
 #include "process.h"
 #include "test_util.h"
 
@@ -20,13 +22,9 @@
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-using rtlab::test::freshTestDir;
-using rtlab::test::runProcess;
-using rtlab::test::slurp;
+using namespace rtlab::test;
 
 namespace {
-
-const fs::path kSource = RTLAB_SOURCE_DIR;
 
 std::vector<std::string> exerciseIds() {
   std::vector<std::string> ids;
@@ -34,58 +32,6 @@ std::vector<std::string> exerciseIds() {
     if (e.path().extension() == ".json") ids.push_back(e.path().stem().string());
   std::sort(ids.begin(), ids.end());
   return ids;
-}
-
-void writeText(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
-
-// `rtlab exercise new ID --out dir/student`; returns the folder.
-fs::path newFolder(const std::string& id, const fs::path& dir) {
-  const fs::path folder = dir / "student";
-  const auto r = runProcess(RTLAB_BINARY, {"exercise", "new", id, "--out", folder.string()});
-  EXPECT_EQ(r.exitCode, 0) << r.err;
-  return folder;
-}
-
-std::vector<std::string> folderFiles(const fs::path& folder) {
-  return json::parse(slurp(folder / "exercise.json"))["files"].get<std::vector<std::string>>();
-}
-
-// The shipped solution's files copied over the student's.
-void copySolution(const fs::path& folder) {
-  for (const auto& f : folderFiles(folder))
-    fs::copy_file(kSource / f, folder / f, fs::copy_options::overwrite_existing);
-}
-
-struct Grade {
-  rtlab::test::ProcessResult process;
-  json result;
-};
-
-Grade grade(const fs::path& folder, std::vector<std::string> extra = {}, int timeout = 300) {
-  std::vector<std::string> args = {"exercise", "grade", folder.string(), "--json"};
-  args.insert(args.end(), extra.begin(), extra.end());
-  Grade g;
-  g.process = runProcess(RTLAB_BINARY, args, timeout);
-  try {
-    g.result = json::parse(g.process.out);
-  } catch (const json::exception&) {
-  }
-  return g;
-}
-
-std::string describe(const Grade& g) { return g.process.err + "\n" + g.result.dump(1); }
-
-// A views file with the exercise's first `n` views.
-fs::path firstViews(const std::string& id, std::size_t n, const fs::path& dir) {
-  json def = json::parse(slurp(kSource / "assets" / "exercises" / (id + ".json")));
-  json views = json::array();
-  for (std::size_t i = 0; i < n && i < def["views"].size(); ++i) views.push_back(def["views"][i]);
-  const fs::path path = dir / "views.json";
-  writeText(path, json{{"schema", 1}, {"views", views}}.dump());
-  return path;
 }
 
 class EveryExercise : public ::testing::TestWithParam<std::string> {};
@@ -125,7 +71,7 @@ TEST_P(EveryExercise, NewFolderIsStubbedAndItsUntouchedGradeIsLowWithTheStubCaus
     EXPECT_NE(copy.find("// Stub:"), std::string::npos) << f;
     EXPECT_NE(copy, slurp(kSource / f)) << f;
   }
-  const Grade g = grade(folder);
+  const Grade g = grade(folder, sharedGradeCache());
   ASSERT_EQ(g.process.exitCode, 0) << describe(g);
   EXPECT_EQ(g.result["exercise"], id);
   EXPECT_FALSE(g.result["passed"].get<bool>());
@@ -143,7 +89,7 @@ TEST_P(EveryExercise, ShippedSolutionScores100) {
   const std::string id = GetParam();
   const fs::path folder = newFolder(id, freshTestDir("exercise"));
   copySolution(folder);
-  const Grade g = grade(folder);
+  const Grade g = grade(folder, sharedGradeCache());
   ASSERT_EQ(g.process.exitCode, 0) << describe(g);
   EXPECT_EQ(g.result["score"], 100) << describe(g);
   EXPECT_TRUE(g.result["passed"].get<bool>());
@@ -172,7 +118,7 @@ TEST_P(EveryExercise, EachDeliberateMistakeFails) {
     ASSERT_NE(at, std::string::npos) << find;
     ASSERT_EQ(text.find(find, at + 1), std::string::npos) << "not unique: " << find;
     writeText(folder / file, text.replace(at, find.size(), m["replace"].get<std::string>()));
-    const Grade g = grade(folder);
+    const Grade g = grade(folder, sharedGradeCache());
     ASSERT_EQ(g.process.exitCode, 0) << describe(g);
     EXPECT_LT(g.result["score"].get<int>(), 100) << describe(g);
     EXPECT_FALSE(g.result["passed"].get<bool>());
@@ -407,6 +353,9 @@ TEST(ExerciseCli, BadArgumentsAreOneLineErrorsWithTheDocumentedCode) {
       {{"exercise", "grade", folder.string(), "--views", (dir / "unknown_key.json").string()}, 2},
       {{"exercise", "grade", folder.string(), "--views", (dir / "out_of_range.json").string()}, 2},
       {{"exercise", "grade", folder.string(), "--report", (dir / "bad.json").string()}, 6},
+      {{"exercise", "grade", folder.string(), "--cache", ""}, 2},
+      {{"exercise", "grade", folder.string(), "--cache", (dir / "bad.json").string()}, 6},
+      {{"exercise", "grade", folder.string(), "--cache", (dir / "bad.json" / "sub").string()}, 6},
   };
   for (const auto& [args, code] : cases) {
     const auto r = runProcess(RTLAB_BINARY, args);

@@ -69,6 +69,11 @@ inline std::string slurp(const std::filesystem::path& path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+inline void writeText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
 } // namespace rtlab::test
 
 // Expects `stmt` to throw rtlab::Error with `code` and a message containing every given part.
