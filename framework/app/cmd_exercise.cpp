@@ -107,7 +107,8 @@ int runExerciseGrade(int argc, char** argv) {
                             "Renders the exercise's test views with DIR's files, the solution's and the stubs' (each in\n"
                             "a child process with a time limit), compares each view with the solution and the reference,\n"
                             "and prints the score. Exit 0 when grading completed, passed or not; 5 when a student file\n"
-                            "does not compile (the JSON is still written); 3 when DIR is not an exercise folder.", specs);
+                            "does not compile (the JSON is still written); 3 when DIR is not an exercise folder; 6 when\n"
+                            "the --report or --cache folder cannot be used.", specs);
     return 0;
   }
   if (args.positionals().size() != 1) usageError("exercise grade needs the student's folder");

@@ -72,7 +72,7 @@ inline std::vector<std::string> sharedGradeCache() {
   namespace fs = std::filesystem;
   const fs::path root = fs::path(RTLAB_TEST_TMP) / "grade-cache";
   std::error_code ec;
-  const auto stamp = fs::last_write_time(RTLAB_BINARY, ec).time_since_epoch().count();
+  const auto stamp = static_cast<unsigned long long>(fs::last_write_time(RTLAB_BINARY, ec).time_since_epoch().count());
   const std::string name = "rtlab-" + std::to_string(fs::file_size(RTLAB_BINARY, ec)) + "-" + std::to_string(stamp);
   for (const auto& entry : fs::directory_iterator(root, ec))
     if (entry.path().filename() != name) fs::remove_all(entry.path(), ec);
