@@ -102,16 +102,18 @@ void main() {
     }
   examined = kPi * uRMax * uRMax * res * res; // the disc's texels, nominally (additive over the bands)
 #else
+  // The per-pixel offsets of the pattern (a Cranley-Patterson rotation: each sample uniform).
+  uint seed = hash32(uint(px.x) + 65536u * uint(px.y));
+  float shift = unitFloat(seed), turn = unitFloat(hash32(seed ^ 0x9e3779b9u));
   // exercise(rsm-pattern): begin
   // task: The paper's pattern around the projection s (map uv of `face`), N = uSamples samples:
   // task: xi1 = fract((j + 0.5) / N + shift), xi2 = fract(radicalInverse(j) + turn) (shift and
-  // task: turn are per-pixel offsets), t = s + uRMax * xi1 * vec2(sin(2 pi xi2), cos(2 pi xi2)).
+  // task: turn: the per-pixel offsets above),
+  // task: t = s + uRMax * xi1 * vec2(sin(2 pi xi2), cos(2 pi xi2)).
   // task: rsmResolve(face, t, f, uv) gives the face and uv storing t (false: no VPL there);
   // task: rsmFetchUv(uv, f, v) the VPL (false: empty texel). Add each VPL's vplIrradiance(v, f,
   // task: x, n, front) times w = (k + 1) pi uRMax^2 res^2 xi1^k / N, k = uWeightExponent (the
   // task: disc's area density for k = 1: unbiased); count `front` in `contributing`.
-  uint seed = hash32(uint(px.x) + 65536u * uint(px.y));
-  float shift = unitFloat(seed), turn = unitFloat(hash32(seed ^ 0x9e3779b9u));
   float k = float(uWeightExponent);
   float norm = (k + 1.0) * kPi * uRMax * uRMax * res * res / float(uSamples);
   for (int j = 0; j < uSamples; ++j) {

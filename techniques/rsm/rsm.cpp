@@ -110,7 +110,8 @@ private:
     raw.format = GL_RGBA32F;
     raw.width = l.width;
     raw.height = l.height;
-    frame.addPass("rsm.indirect",
+    frame.addPass(
+        "rsm.indirect",
         [&](PassBuilder& b) {
           b.read(kRsmFlux);
           b.read(kRsmNormal);
@@ -162,7 +163,8 @@ private:
     std::vector<std::string> defines;
     if (count) defines.push_back("OUTPUT_COUNT");
     const float sigma = 0.01f * frame.scene().worldBounds().radius();
-    frame.addPass(name,
+    frame.addPass(
+        name,
         [&](PassBuilder& b) {
           b.read(kRaw);
           b.read(res::kPosition);

@@ -8,8 +8,8 @@
 #include "frame/param_catalog.h"
 #include "frame/registry.h"
 #include "frame/selection.h"
-#include "render_fixture.h"
 #include "render/renderer.h"
+#include "render_fixture.h"
 #include "scene/builtin_scenes.h"
 #include "scene/mesh_builder.h"
 #include "scene/scene_params.h"
@@ -36,7 +36,8 @@ Image indirect(const TestFrame& f) {
 
 double meanOf(const Image& img) {
   double sum = 0.0;
-  for (float v : img.pixels) sum += v;
+  for (float v : img.pixels)
+    sum += v;
   return sum / double(img.pixels.size());
 }
 
@@ -74,7 +75,8 @@ TestFrame floorAndWall(const std::string& name, const Light& light, bool behind,
   TechniqueSelection selection(TechniqueRegistry::instance());
   selection.activateList("rsm");
   f.techniques = selection.ordered();
-  for (const auto& s : sets) f.params.setAssignment(s);
+  for (const auto& s : sets)
+    f.params.setAssignment(s);
   applySceneParams(f.params, f.scene);
   f.width = w;
   f.height = h;
@@ -96,8 +98,7 @@ glm::vec3 wallPointAt(const TestFrame& f, int x, int y) {
 // `floorIrradiance(x, z)`, over the floor points within `radius` of (0, z0) (the map disc), by the
 // midpoint rule on a 1000 x 1000 grid:
 //   E = (rho / pi) * integral of E_floor(x_p) * y * x / |x - x_p|^4 dA.
-template <typename F>
-double wallIrradiance(double y, double z0, double radius, F floorIrradiance) {
+template <typename F> double wallIrradiance(double y, double z0, double radius, F floorIrradiance) {
   constexpr int n = 1000;
   const double dx = 2.0 / n, dz = 2.0 / n;
   double sum = 0.0;
@@ -117,11 +118,11 @@ double wallIrradiance(double y, double z0, double radius, F floorIrradiance) {
 // over the floor within the disc (the map is 2 r wide, r the light space's fitted radius) within
 // 1% (measured +0.10%, +0.47%, +0.60%; at 256^2 -0.04%, -0.15%, -0.18%).
 TEST(Rsm, DirectionalLightMatchesTheClosedFormIntegral) {
-  const TestFrame f = floorAndWall("rsm_floor_wall_directional",
-                                   builtin::directionalLight("key", {0, -1, 0}, 3.0f, 0.5f), false,
-                                   {"rsm.sampling=all_texels", "rsm.r_max=0.5", "rsm.resolution=128",
-                                    "rsm.indirect_scale=1", "rsm.distance_clamp=0"},
-                                   64, 48);
+  const TestFrame f =
+      floorAndWall("rsm_floor_wall_directional", builtin::directionalLight("key", {0, -1, 0}, 3.0f, 0.5f), false,
+                   {"rsm.sampling=all_texels", "rsm.r_max=0.5", "rsm.resolution=128", "rsm.indirect_scale=1",
+                    "rsm.distance_clamp=0"},
+                   64, 48);
   const Image img = indirect(f);
   const float mapRadius = 1.01f * std::max(f.scene.worldBounds().radius(), 1e-3f);
   int checked = 0;
@@ -131,8 +132,8 @@ TEST(Rsm, DirectionalLightMatchesTheClosedFormIntegral) {
     const glm::vec3 p = wallPointAt(f, x, y);
     const double expected = wallIrradiance(p.y, p.z, 0.5 * 2.0 * mapRadius, [](double, double) { return 3.0; });
     const double got = pixelOf(img, x, y).x;
-    std::printf("directional: wall point (%.3f, %.3f): rsm %.5f, closed form %.5f (%+.2f%%)\n", p.y, p.z, got,
-                expected, 100.0 * (got / expected - 1.0));
+    std::printf("directional: wall point (%.3f, %.3f): rsm %.5f, closed form %.5f (%+.2f%%)\n", p.y, p.z, got, expected,
+                100.0 * (got / expected - 1.0));
     EXPECT_NEAR(got, expected, 0.01 * expected);
     ++checked;
   }
@@ -170,16 +171,17 @@ TEST(Rsm, PointLightMatchesTheClosedFormIntegral) {
 // behind its normal, so its indirect light is exactly 0, while the front has some.
 TEST(Rsm, VplsBehindTheReceiverAddNothing) {
   const Light light = builtin::directionalLight("key", {0, -1, 0}, 3.0f, 0.5f);
-  const TestFrame back = floorAndWall("rsm_floor_wall_back", light, true, {"rsm.indirect_scale=1", "rsm.r_max=0.5"}, 96, 72);
+  const TestFrame back =
+      floorAndWall("rsm_floor_wall_back", light, true, {"rsm.indirect_scale=1", "rsm.r_max=0.5"}, 96, 72);
   const Image img = indirect(back);
   int x, y;
   ASSERT_TRUE(projectToPixel(back, {0, 0.8f, 0}, x, y));
   EXPECT_EQ(pixelOf(img, x, y), glm::vec3(0.0f));
-  const TestFrame front = floorAndWall("rsm_floor_wall_front", light, false, {"rsm.indirect_scale=1", "rsm.r_max=0.5"}, 96, 72);
+  const TestFrame front =
+      floorAndWall("rsm_floor_wall_front", light, false, {"rsm.indirect_scale=1", "rsm.r_max=0.5"}, 96, 72);
   ASSERT_TRUE(projectToPixel(front, {0, 0.8f, 0}, x, y));
   EXPECT_GT(pixelOf(indirect(front), x, y).x, 0.1f);
 }
-
 
 // The mean of `img` over the (2k+1)^2 pixels around (x, y).
 glm::dvec3 around(const Image& img, int x, int y, int k) {
@@ -250,15 +252,14 @@ TEST(Rsm, PatternConvergesToTheAllTexelSum) {
 // "Artifacts").
 TEST(Rsm, MapResolutionChangesTheMeanLittle) {
   auto meanAt = [](int resolution) {
-    const TestFrame f = makeTestFrame("cornell", "rsm",
-                                      {"rsm.resolution=" + std::to_string(resolution), "rsm.weight_exponent=1",
-                                       "rsm.samples=1024"},
-                                      160, 90);
+    const TestFrame f = makeTestFrame(
+        "cornell", "rsm", {"rsm.resolution=" + std::to_string(resolution), "rsm.weight_exponent=1", "rsm.samples=1024"},
+        160, 90);
     return meanOf(indirect(f));
   };
   const double m64 = meanAt(64), m256 = meanAt(256), m1024 = meanAt(1024);
-  std::printf("mean indirect: 64^2 %.5f (%+.2f%%), 256^2 %.5f (%+.2f%%), 1024^2 %.5f\n", m64, 100.0 * (m64 / m1024 - 1.0),
-              m256, 100.0 * (m256 / m1024 - 1.0), m1024);
+  std::printf("mean indirect: 64^2 %.5f (%+.2f%%), 256^2 %.5f (%+.2f%%), 1024^2 %.5f\n", m64,
+              100.0 * (m64 / m1024 - 1.0), m256, 100.0 * (m256 / m1024 - 1.0), m1024);
   EXPECT_NEAR(m256, m1024, 0.02 * m1024);
   EXPECT_NEAR(m64, m1024, 0.10 * m1024);
 }
@@ -329,8 +330,8 @@ TEST(Rsm, OffIsFree) {
   EXPECT_TRUE(hasResource(*on.renderer, "rsm.flux"));
   EXPECT_FALSE(ranPass(*on.renderer, "rsm.flux"));
   EXPECT_FALSE(ranPass(*on.renderer, "rsm.view_vpl_count"));
-  TestRender views = renderTestFrame(makeTestFrame("cornell", "rsm", {"rsm.samples=16"}, 64, 36),
-                                     {"rsm.flux", "rsm.vpl_count"});
+  TestRender views =
+      renderTestFrame(makeTestFrame("cornell", "rsm", {"rsm.samples=16"}, 64, 36), {"rsm.flux", "rsm.vpl_count"});
   EXPECT_EQ(views.glErrors, 0);
   EXPECT_TRUE(ranPass(*views.renderer, "rsm.flux"));
   EXPECT_TRUE(ranPass(*views.renderer, "rsm.view_vpl_count"));
