@@ -293,6 +293,27 @@ TEST(Rsm, ErrorAgainstTheReferenceOnCornell) {
   EXPECT_LT(large, 1.1 * kMeasuredLarge);
 }
 
+// The distance clamp caps the corners' 1/|d|^4 terms: with the all-texel sum on a 128^2 map
+// (cornell, full resolution) the largest pixel falls as the clamp grows from 0 to 1 to 2 texel
+// footprints (measured 1.31, 1.06, 0.92) while the image mean moves by a few percent only
+// (measured -2.1% and -6.2% against no clamp): the clamp acts where VPLs lie near.
+TEST(Rsm, DistanceClampCapsTheCorners) {
+  double previousMax = 1e30, mean0 = 0.0;
+  for (const char* clamp : {"0", "1", "2"}) {
+    const Image img = indirect(makeTestFrame("cornell", "rsm",
+                                             {"rsm.resolution=128", "rsm.sampling=all_texels", "rsm.indirect_scale=1",
+                                              std::string("rsm.distance_clamp=") + clamp},
+                                             160, 90));
+    const double largest = *std::max_element(img.pixels.begin(), img.pixels.end());
+    const double mean = meanOf(img);
+    if (mean0 == 0.0) mean0 = mean;
+    std::printf("distance clamp %s: max %.4f, mean %.5f\n", clamp, largest, mean);
+    EXPECT_LT(largest, previousMax) << clamp;
+    EXPECT_NEAR(mean, mean0, 0.1 * mean0) << clamp;
+    previousMax = largest;
+  }
+}
+
 // Every kind of light 0 gives finite, non-zero indirect light: directional (stacked, an
 // orthographic map), spot (contact, one perspective map), wide spot (cornell, a cube).
 TEST(Rsm, EveryLightTypeGivesFiniteNonZeroIndirect) {
