@@ -13,6 +13,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/mesh_builder.h"
 #include "scene/scene_params.h"
+#include "util/error.h"
 
 #include <gtest/gtest.h>
 
@@ -325,6 +326,28 @@ TEST(Rsm, EveryLightTypeGivesFiniteNonZeroIndirect) {
       sum += v;
     }
     EXPECT_GT(sum, 0.0) << scene;
+  }
+}
+
+// A rectangular light 0 has no light-space projection: a usage error (exit 2) with one line naming
+// it, as the shadow stage gives, not a crash or a silent black frame.
+TEST(Rsm, RectangularLightZeroIsAUsageError) {
+  Light rect;
+  rect.name = "rect";
+  rect.type = LightType::Rect;
+  rect.position = {1, 1.5f, 0};
+  rect.direction = {0, -1, 0};
+  rect.right = {1, 0, 0};
+  rect.up = {0, 0, 1};
+  rect.width = rect.height = 0.5f;
+  rect.intensity = 5.0f;
+  const TestFrame f = floorAndWall("rsm_floor_wall_rect", rect, false, {}, 32, 24);
+  try {
+    renderTestFrame(f, {"indirect"});
+    ADD_FAILURE() << "no error for a rectangular light 0";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::Usage);
+    EXPECT_NE(std::string(e.what()).find("light 0 is rectangular: the light-space G-buffer"), std::string::npos) << e.what();
   }
 }
 
