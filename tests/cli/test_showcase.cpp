@@ -56,7 +56,7 @@ rtlab::test::ProcessResult Showcase::s_result;
 TEST_F(Showcase, AtlasShowsErrorsAndChartsPerStageAndOpensInChromium) {
   const fs::path out = kRoot / "out";
   const std::string html = slurp(out / "index.html");
-  for (const char* stage : {"shadow", "ao", "arealight", "transparency", "post"}) {
+  for (const char* stage : {"shadow", "ao", "indirect", "arealight", "transparency", "post"}) {
     SCOPED_TRACE(stage);
     EXPECT_NE(html.find(std::string("id=\"atlas-") + stage + "\""), std::string::npos);
     const fs::path sweep = out / "sweeps" / stage;
@@ -71,7 +71,7 @@ TEST_F(Showcase, AtlasShowsErrorsAndChartsPerStageAndOpensInChromium) {
     EXPECT_NE(html.find(std::string("sweeps/") + stage + "/reference/"), std::string::npos);
   }
   EXPECT_GE(count(html, "FLIP "), 8u) << "five shadow, two ao techniques and bloom";
-  EXPECT_EQ(count(html, "<svg class=\"chart\""), 5u); // one per stage above
+  EXPECT_EQ(count(html, "<svg class=\"chart\""), 6u); // one per stage above
   EXPECT_GE(count(html, "class=\"colorbar\""), 3u);
   EXPECT_NE(html.find("<pre class=\"command\"><code>rtlab sweep --scene contact"), std::string::npos);
 
@@ -98,10 +98,10 @@ TEST_F(Showcase, AtlasShowsErrorsAndChartsPerStageAndOpensInChromium) {
   ASSERT_FALSE(dom.timedOut);
   EXPECT_EQ(dom.exitCode, 0) << dom.err;
   for (const auto& line : rtlab::test::consoleMessages(dom.err)) ADD_FAILURE() << "console message: " << line;
-  // The DOM as Chromium built it: the five stages' figures and charts with their points.
+  // The DOM as Chromium built it: the six stages' figures and charts with their points.
   EXPECT_GE(count(dom.out, "RMSE "), 8u);
   EXPECT_GE(count(dom.out, "FLIP "), 8u);
-  EXPECT_EQ(count(dom.out, "<svg class=\"chart\""), 5u);
+  EXPECT_EQ(count(dom.out, "<svg class=\"chart\""), 6u);
   EXPECT_GE(count(dom.out, "class=\"point\""), 8u);
   EXPECT_GE(count(dom.out, "class=\"series\""), 4u);
 
