@@ -71,7 +71,7 @@ void expectConsistentMesh(const Mesh& m) {
 }
 
 TEST(SceneBuiltin, NamesInListOrder) {
-  EXPECT_EQ(builtinSceneNames(), (std::vector<std::string>{"contact", "stacked", "cornell", "panes", "arealight", "glow", "layers", "arealight_ramp"}));
+  EXPECT_EQ(builtinSceneNames(), (std::vector<std::string>{"contact", "stacked", "cornell", "panes", "arealight", "glow", "layers", "arealight_ramp", "gi_wall"}));
   EXPECT_TRUE(isBuiltinScene("cornell"));
   EXPECT_FALSE(isBuiltinScene("Cornell"));
 }
