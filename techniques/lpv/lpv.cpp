@@ -122,7 +122,7 @@ public:
             .withUnit("cells")
             .withHelp("Distance along the VPL's normal, in cells, at which it is injected; 0 lets surfaces light "
                       "themselves"),
-        ParamSpec::real("lpv.lookup_offset", "Lookup offset", 0.5, 0.0, 1.0)
+        ParamSpec::real("lpv.lookup_offset", "Lookup offset", 0.0, 0.0, 1.0)
             .withUnit("cells")
             .withHelp("Distance along the surface normal, in cells, at which the volume is read; 0 reads at the "
                       "surface, where a wall on a cell face averages the cells on both its sides (leaks)"),
