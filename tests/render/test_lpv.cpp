@@ -282,5 +282,41 @@ TEST(Lpv, ErrorAgainstTheReferenceOnCornell) {
   EXPECT_LT(rmse, none);
 }
 
+bool hasResource(const Renderer& renderer, const std::string& prefix) {
+  for (const auto& res : renderer.resources())
+    if (res.name.rfind(prefix, 0) == 0) return true;
+  return false;
+}
+
+bool ranPass(const Renderer& renderer, const std::string& prefix) {
+  for (const auto& p : renderer.lastPasses())
+    if (p.kept && p.name.rfind(prefix, 0) == 0) return true;
+  return false;
+}
+
+// Off is free: without lpv no lpv or light-space G-buffer pass runs and no such resource exists;
+// with it the debug views are culled unless requested, and 0 iterations add no propagation or
+// geometry volume.
+TEST(Lpv, OffIsFreeAndUnrequestedPartsAreCulled) {
+  TestRender off = renderTestFrame(makeTestFrame("cornell", "", {}, 64, 36), {"color"});
+  EXPECT_FALSE(ranPass(*off.renderer, "lpv"));
+  EXPECT_FALSE(ranPass(*off.renderer, "rsm"));
+  EXPECT_FALSE(hasResource(*off.renderer, "lpv"));
+  EXPECT_FALSE(hasResource(*off.renderer, "rsm"));
+  TestRender on = renderTestFrame(makeTestFrame("cornell", "lpv", {}, 64, 36), {"color"});
+  EXPECT_TRUE(ranPass(*on.renderer, "lpv.propagate8"));
+  EXPECT_FALSE(ranPass(*on.renderer, "lpv.propagate9"));
+  EXPECT_TRUE(ranPass(*on.renderer, "lpv.geometry"));
+  EXPECT_TRUE(ranPass(*on.renderer, "lpv.lookup"));
+  EXPECT_FALSE(ranPass(*on.renderer, "lpv.slice"));
+  EXPECT_FALSE(ranPass(*on.renderer, "lpv.injected"));
+  TestRender none = renderTestFrame(makeTestFrame("cornell", "lpv", {"lpv.iterations=0"}, 64, 36), {"color"});
+  EXPECT_FALSE(ranPass(*none.renderer, "lpv.propagate"));
+  EXPECT_FALSE(ranPass(*none.renderer, "lpv.geometry"));
+  EXPECT_FALSE(hasResource(*none.renderer, "lpv.sum"));
+  TestRender view = renderTestFrame(makeTestFrame("cornell", "lpv", {}, 64, 36), {"lpv.slice"});
+  EXPECT_TRUE(ranPass(*view.renderer, "lpv.slice"));
+}
+
 } // namespace
 } // namespace rtlab
