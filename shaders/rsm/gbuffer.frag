@@ -17,7 +17,6 @@ in vec3 vNormal;
 in vec4 vTangent;
 in vec2 vUv;
 
-uniform int uRsmFace;
 
 layout(location = 0) out vec4 oFlux;
 layout(location = 1) out vec4 oNormal;

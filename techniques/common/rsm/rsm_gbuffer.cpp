@@ -44,7 +44,8 @@ void setRsmSpace(gl::Program& p, const LightSpace& ls, int resolution) {
 LightSpace rsmLightSpace(const Scene& scene, int resolution) {
   if (scene.lights.empty()) throw Error(ExitCode::Internal, "scene has no light 0");
   if (scene.lights[0].type == LightType::Rect)
-    usageError("light 0 is rectangular: the light-space G-buffer (rsm, lpv) supports directional, spot and point lights");
+    usageError(
+        "light 0 is rectangular: the light-space G-buffer (rsm, lpv) supports directional, spot and point lights");
   return computeLightSpace(scene.lights[0], scene.worldBounds(), resolution);
 }
 
@@ -61,7 +62,8 @@ void addRsmGBufferPass(FrameGraph& frame, int resolution) {
   const gl::TextureDesc depth = mapDesc(ls, resolution, GL_DEPTH_COMPONENT32F);
   for (int face = 0; face < ls.faces(); ++face) {
     const std::string name = ls.faces() == 1 ? std::string("rsm.gbuffer") : "rsm.gbuffer.face" + std::to_string(face);
-    frame.addPass(name,
+    frame.addPass(
+        name,
         [&](PassBuilder& b) {
           b.writeAttachment(kRsmFlux, flux, 0, face);
           b.writeAttachment(kRsmNormal, normal, 0, face);
@@ -79,18 +81,21 @@ void addRsmGBufferPass(FrameGraph& frame, int resolution) {
           glDisable(GL_BLEND);
           glDisable(GL_CULL_FACE);
           const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
-          for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, i, zero);
+          for (int i = 0; i < 3; ++i)
+            glClearNamedFramebufferfv(fbo.id(), GL_COLOR, i, zero);
           glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
           p.use();
           ctx.common.bindLights(p);
           setRsmSpace(p, ls, resolution);
-          p.set("uRsmFace", face).set("uViewProj", ls.viewProj[face]);
+          p.set("uViewProj", ls.viewProj[face]);
           ctx.sceneGpu.draw(p, SceneGpu::Filter::Opaque, true);
         });
   }
 }
 
-int rsmResolution(const PassContext& ctx) { return ctx.texture(kRsmFlux).desc().width; }
+int rsmResolution(const PassContext& ctx) {
+  return ctx.texture(kRsmFlux).desc().width;
+}
 
 void bindRsm(PassContext& ctx, gl::Program& p, int firstUnit) {
   const int resolution = rsmResolution(ctx);
@@ -104,7 +109,8 @@ void bindRsm(PassContext& ctx, gl::Program& p, int firstUnit) {
 void addRsmFluxView(FrameGraph& frame, int resolution, const std::string& view) {
   addRsmGBufferPass(frame, resolution);
   const std::string out = aovResource(view);
-  frame.addPass(view,
+  frame.addPass(
+      view,
       [&](PassBuilder& b) {
         b.read(kRsmFlux);
         b.read(kRsmNormal);

@@ -16,7 +16,9 @@ namespace rtlab {
 
 class FrameGraph;
 struct PassContext;
-namespace gl { class Program; }
+namespace gl {
+class Program;
+}
 
 // RGBA32F: the reflected flux Phi_p of the texel's patch (RGB, lumen for the built-in scenes'
 // photometric lights), A = 1 on surface and 0 where light 0 sees nothing. 32-bit, not 16: Phi_p
