@@ -65,23 +65,27 @@ void bindVolumes(PassContext& ctx, gl::Program& p, const std::array<std::string,
 // per light-space texel, blended additively into the layered 3D target (shaders/lpv/inject.*).
 void addInjection(FrameGraph& frame, const std::string& name, const std::vector<std::string>& targets,
                   const gl::TextureDesc& desc, bool geometry) {
-  frame.addPass(name,
+  frame.addPass(
+      name,
       [&](PassBuilder& b) {
         b.read(kRsmFlux);
         b.read(kRsmNormal);
         b.read(kRsmPosition);
-        for (const std::string& t : targets) b.write(t, desc);
+        for (const std::string& t : targets)
+          b.write(t, desc);
       },
       [targets, geometry, name, size = desc.width](PassContext& ctx) {
         std::vector<std::string> defines;
         if (geometry) defines.push_back("GEOMETRY_VOLUME");
-        gl::Program& p = ctx.programs.get(
-            {{"lpv/inject.vert", "lpv/inject.geom", "lpv/inject.frag"}, defines, geometry ? "lpv.geometry" : "lpv.inject"});
+        gl::Program& p = ctx.programs.get({{"lpv/inject.vert", "lpv/inject.geom", "lpv/inject.frag"},
+                                           defines,
+                                           geometry ? "lpv.geometry" : "lpv.inject"});
         const gl::Framebuffer& fbo = ctx.framebuffer(name, targets);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, size, size);
         const float zero[4] = {0, 0, 0, 0};
-        for (std::size_t i = 0; i < targets.size(); ++i) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, GLint(i), zero);
+        for (std::size_t i = 0; i < targets.size(); ++i)
+          glClearNamedFramebufferfv(fbo.id(), GL_COLOR, GLint(i), zero);
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE);
         glDisable(GL_DEPTH_TEST);
@@ -164,14 +168,19 @@ public:
       const auto src = volumeSet(i % 2 == 1 ? "a" : "b");
       const auto dst = volumeSet(i % 2 == 1 ? "b" : "a");
       const auto sum = volumeSet("sum");
-      frame.addComputePass("lpv.propagate" + std::to_string(i), ComputeGrid::of(dst[0]),
+      frame.addComputePass(
+          "lpv.propagate" + std::to_string(i), ComputeGrid::of(dst[0]),
           [&](PassBuilder& b) {
-            for (const std::string& s : src) b.read(s);
+            for (const std::string& s : src)
+              b.read(s);
             if (occlusion) b.read(kGeometryVolume);
-            for (int c = 0; c < 3; ++c) b.writeImage(dst[std::size_t(c)], volume, c);
+            for (int c = 0; c < 3; ++c)
+              b.writeImage(dst[std::size_t(c)], volume, c);
             for (int c = 0; c < 3; ++c) {
-              if (i == 1) b.writeImage(sum[std::size_t(c)], volume, 3 + c);
-              else b.readWriteImage(sum[std::size_t(c)], 3 + c);
+              if (i == 1)
+                b.writeImage(sum[std::size_t(c)], volume, 3 + c);
+              else
+                b.readWriteImage(sum[std::size_t(c)], 3 + c);
             }
           },
           [src, occlusion, first = i == 1, k](PassContext& ctx) -> gl::Program& {
@@ -188,12 +197,14 @@ public:
     }
     const auto result = volumeSet(iterations == 0 ? "a" : "sum");
 
-    frame.addPass("lpv.lookup",
+    frame.addPass(
+        "lpv.lookup",
         [&](PassBuilder& b) {
           b.read(res::kPosition);
           b.read(res::kNormal);
           b.read(res::kGeometry);
-          for (const std::string& r : result) b.read(r);
+          for (const std::string& r : result)
+            b.read(r);
           b.write("indirect", frameTexture(frame, GL_RGBA32F));
         },
         [result](PassContext& ctx) {
@@ -213,8 +224,10 @@ public:
 
     addView(frame, "lpv.slice", "VIEW_SLICE", {result.begin(), result.end()});
     addView(frame, "lpv.injected", "VIEW_INJECTED", {injected.begin(), injected.end()});
-    if (occlusion && iterations > 0) addView(frame, "lpv.geometry", "VIEW_GEOMETRY", {kGeometryVolume});
-    else addEmptyGeometryView(frame);
+    if (occlusion && iterations > 0)
+      addView(frame, "lpv.geometry", "VIEW_GEOMETRY", {kGeometryVolume});
+    else
+      addEmptyGeometryView(frame);
   }
 
 private:
@@ -222,11 +235,13 @@ private:
   static void addView(FrameGraph& frame, const std::string& view, const std::string& define,
                       const std::vector<std::string>& volumes) {
     const std::string out = aovResource(view);
-    frame.addPass(view,
+    frame.addPass(
+        view,
         [&](PassBuilder& b) {
           b.read(res::kPosition);
           b.read(res::kGeometry);
-          for (const std::string& v : volumes) b.read(v);
+          for (const std::string& v : volumes)
+            b.read(v);
           b.write(out, frameTexture(frame, GL_RGBA32F));
         },
         [out, define, volumes, view](PassContext& ctx) {
@@ -253,8 +268,8 @@ private:
   // Without occlusion there is no geometry volume: the view is 0 on every surface.
   static void addEmptyGeometryView(FrameGraph& frame) {
     const std::string out = aovResource("lpv.geometry");
-    frame.addPass("lpv.geometry_view",
-        [&](PassBuilder& b) { b.write(out, frameTexture(frame, GL_RGBA32F)); },
+    frame.addPass(
+        "lpv.geometry_view", [&](PassBuilder& b) { b.write(out, frameTexture(frame, GL_RGBA32F)); },
         [out](PassContext& ctx) {
           ctx.beginFullscreen("lpv.geometry_view", {out});
           const float zero[4] = {0, 0, 0, 0};
@@ -267,6 +282,8 @@ private:
 
 } // namespace
 
-void registerTechnique_lpv(TechniqueRegistry& registry) { registerTechniqueType<Lpv>(registry); }
+void registerTechnique_lpv(TechniqueRegistry& registry) {
+  registerTechniqueType<Lpv>(registry);
+}
 
 } // namespace rtlab

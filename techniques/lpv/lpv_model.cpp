@@ -21,25 +21,30 @@ GridFit fitGrid(const Bounds& bounds, int n) {
   return g;
 }
 
-Sh4 shBasis(const glm::vec3& w) { return {kY00, kY1 * w.y, kY1 * w.z, kY1 * w.x}; }
+Sh4 shBasis(const glm::vec3& w) {
+  return {kY00, kY1 * w.y, kY1 * w.z, kY1 * w.x};
+}
 
 Sh4 cosineLobe(const glm::vec3& n, int bands) {
   const float c1 = bands >= 2 ? std::sqrt(kPi / 3.0f) : 0.0f;
   return {std::sqrt(kPi) * 0.5f, c1 * n.y, c1 * n.z, c1 * n.x};
 }
 
-float shEval(const Sh4& c, const glm::vec3& w) { return glm::dot(c, shBasis(w)); }
+float shEval(const Sh4& c, const glm::vec3& w) {
+  return glm::dot(c, shBasis(w));
+}
 
-float shFlux(const Sh4& c) { return 4.0f * kPi * kY00 * c.x; }
+float shFlux(const Sh4& c) {
+  return 4.0f * kPi * kY00 * c.x;
+}
 
 float solidAngleNormalisation() {
   return 4.0f * kPi / (6.0f * (kFrontSolidAngle + 4.0f * kSideSolidAngle));
 }
 
 const std::array<glm::ivec3, 6>& axialDirections() {
-  static const std::array<glm::ivec3, 6> kDirs = {
-      glm::ivec3(1, 0, 0), glm::ivec3(-1, 0, 0), glm::ivec3(0, 1, 0),
-      glm::ivec3(0, -1, 0), glm::ivec3(0, 0, 1), glm::ivec3(0, 0, -1)};
+  static const std::array<glm::ivec3, 6> kDirs = {glm::ivec3(1, 0, 0),  glm::ivec3(-1, 0, 0), glm::ivec3(0, 1, 0),
+                                                  glm::ivec3(0, -1, 0), glm::ivec3(0, 0, 1),  glm::ivec3(0, 0, -1)};
   return kDirs;
 }
 
@@ -60,7 +65,8 @@ std::array<PropagationFace, 5> propagationFaces(const glm::ivec3& d) {
 
 float Grid::totalFlux() const {
   double sum = 0.0;
-  for (const Sh4& c : cells) sum += shFlux(c);
+  for (const Sh4& c : cells)
+    sum += shFlux(c);
   return float(sum);
 }
 

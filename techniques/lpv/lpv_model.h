@@ -61,7 +61,9 @@ struct Grid {
   explicit Grid(int size) : n(size), cells(std::size_t(size) * size * size, Sh4(0.0f)) {}
   Sh4& at(int x, int y, int z) { return cells[(std::size_t(z) * n + y) * n + x]; }
   const Sh4& at(int x, int y, int z) const { return cells[(std::size_t(z) * n + y) * n + x]; }
-  bool inside(const glm::ivec3& c) const { return glm::all(glm::greaterThanEqual(c, glm::ivec3(0))) && glm::all(glm::lessThan(c, glm::ivec3(n))); }
+  bool inside(const glm::ivec3& c) const {
+    return glm::all(glm::greaterThanEqual(c, glm::ivec3(0))) && glm::all(glm::lessThan(c, glm::ivec3(n)));
+  }
   float totalFlux() const;
 };
 

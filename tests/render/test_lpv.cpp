@@ -34,9 +34,8 @@ TEST(LpvModel, CosineLobeIsTheProjectionOfTheClampedCosine) {
   const glm::vec3 n = glm::normalize(glm::vec3(0.3f, -0.5f, 0.8f));
   const lpv::Sh4 c = lpv::cosineLobe(n);
   for (int k = 0; k < 4; ++k) {
-    const double projected = sphereIntegral([&](const glm::vec3& w) {
-      return std::max(0.0f, glm::dot(n, w)) * lpv::shBasis(w)[k];
-    });
+    const double projected =
+        sphereIntegral([&](const glm::vec3& w) { return std::max(0.0f, glm::dot(n, w)) * lpv::shBasis(w)[k]; });
     EXPECT_NEAR(c[k], projected, 1e-3) << k;
   }
   // The flux of I = max(0, n.w) is pi, and band 0 alone keeps it.
@@ -139,7 +138,8 @@ double meanOf(const Image& img) {
   std::size_t n = 0;
   for (std::size_t i = 0; i < img.pixelCount(); ++i) {
     if (img.hasMask() && img.mask[i] < 0.5f) continue;
-    for (int c = 0; c < 3; ++c) sum += img.pixels[i * 3 + c];
+    for (int c = 0; c < 3; ++c)
+      sum += img.pixels[i * 3 + c];
     n += 3;
   }
   return n ? sum / double(n) : 0.0;
@@ -243,7 +243,7 @@ TEST(Lpv, PointAndDirectionalLightZeroGiFiniteIndirectLight) {
     Light& l = f.scene.lights[0];
     l.type = type;
     if (type == LightType::Directional) {
-      l.intensity = 3.0f; // lux, the key irradiance of the built-in scenes
+      l.intensity = 3.0f;                                          // lux, the key irradiance of the built-in scenes
       l.direction = glm::normalize(glm::vec3(0.3f, -0.6f, -1.0f)); // in through the open front
     }
     f.scene.name = type == LightType::Point ? "cornell_point" : "cornell_directional";
