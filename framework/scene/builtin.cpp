@@ -14,7 +14,7 @@ namespace rtlab {
 const std::vector<std::string>& builtinSceneNames() {
   static const std::vector<std::string> kNames = {"contact", "stacked", "cornell", "panes",
                                                   "arealight", "glow", "layers",
-                                                  "arealight_ramp"};
+                                                  "arealight_ramp", "gi_wall"};
   return kNames;
 }
 
@@ -32,6 +32,7 @@ Scene makeBuiltinScene(const std::string& name) {
   if (name == "glow") return builtin::makeGlow();
   if (name == "layers") return builtin::makeLayers();
   if (name == "arealight_ramp") return builtin::makeAreaLightRamp();
+  if (name == "gi_wall") return builtin::makeGiWall();
   std::string list;
   for (const std::string& n : builtinSceneNames()) list += (list.empty() ? "" : ", ") + n;
   usageError("unknown scene '" + name + "'" + didYouMean(name, builtinSceneNames()) + " (built-in scenes: " + list + ")");

@@ -1,4 +1,4 @@
-// Built-in scenes for indirect light, transparency and area lights: `cornell`, `panes`,
+// Built-in scenes for indirect light, transparency and area lights: `cornell`, `gi_wall`, `panes`,
 // `arealight`, `arealight_ramp`. Lighting targets as in builtin_shadow.cpp (key irradiance about 3).
 #include "scene/builtin_scenes.h"
 #include "scene/mesh_builder.h"
@@ -37,6 +37,24 @@ Scene makeCornell() {
   // (docs/scene-format.md "Built-in scenes"), while the key light still dominates the lit floor.
   scene.ambient = glm::vec3(0.2f);
   return scene;
+}
+
+// gi_wall: one bounce past a thin occluder (docs/scene-format.md). A white floor 7x6, a saturated
+// red bounce wall at x = -3 facing +x, and between the wall and the receiver (the floor at x > 0) a
+// white occluder wall 0.05 thick and 1.5 high at x = -0.5: thinner than one LPV cell at every grid
+// (7/64 = 0.11 at 64 cells), and low enough that the upper wall's light passes over it. Light 0 is
+// a spot above the gap between the two walls aimed at the red wall; its cone (45 deg) misses the
+// receiver, so the receiver's light is indirect. Move it with the light0.* keys.
+Scene makeGiWall() {
+  SceneBuilder b("gi_wall");
+  const int white = b.addMaterial(diffuseMaterial("white", glm::vec3(0.73f), 0.9f));
+  const int red = b.addMaterial(diffuseMaterial("red", {0.8f, 0.05f, 0.04f}, 0.9f));
+  b.addObject(makeQuad("floor", {0, 0, 0}, {3.5f, 0, 0}, {0, 0, -3.0f}, 4), white);
+  b.addObject(makeQuad("bounce_wall", {-3.0f, 1.5f, 0}, {0, 0, -2.5f}, {0, 1.5f, 0}, 4), red);
+  b.addObject(makeBox("occluder", {0.05f, 1.5f, 5.0f}), white, placed({-0.5f, 0.75f, 0}));
+  // 45 cd at 2.75 from the wall's lit centre, at 57 deg from its normal: E about 3 there.
+  b.addLight(spotLight("key", {-1.5f, 3.5f, 0}, {-3.0f, 1.2f, 0}, 45.0f, 35.0f, 45.0f, 0.1f));
+  return b.finish(camera({4.5f, 4.0f, 6.0f}, {-0.8f, 0.6f, 0}, 45.0f));
 }
 
 // panes: four coloured transparent panes (alpha 0.4-0.5; red, green and blue parallel at

@@ -36,6 +36,7 @@ Camera camera(const glm::vec3& position, const glm::vec3& target, float fovY);
 Scene makeContact();
 Scene makeStacked();
 Scene makeCornell();
+Scene makeGiWall();
 Scene makePanes();
 Scene makeAreaLight();
 Scene makeAreaLightRamp();

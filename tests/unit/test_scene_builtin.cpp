@@ -71,7 +71,7 @@ void expectConsistentMesh(const Mesh& m) {
 }
 
 TEST(SceneBuiltin, NamesInListOrder) {
-  EXPECT_EQ(builtinSceneNames(), (std::vector<std::string>{"contact", "stacked", "cornell", "panes", "arealight", "glow", "layers", "arealight_ramp"}));
+  EXPECT_EQ(builtinSceneNames(), (std::vector<std::string>{"contact", "stacked", "cornell", "panes", "arealight", "glow", "layers", "arealight_ramp", "gi_wall"}));
   EXPECT_TRUE(isBuiltinScene("cornell"));
   EXPECT_FALSE(isBuiltinScene("Cornell"));
 }
@@ -314,7 +314,7 @@ TEST(SceneLoad, BuiltinNamesAndUnknownNames) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::Usage);
     EXPECT_EQ(std::string(e.what()),
-              "unknown scene 'nosuchscene' (built-in scenes: contact, stacked, cornell, panes, arealight, glow, layers, arealight_ramp)");
+              "unknown scene 'nosuchscene' (built-in scenes: contact, stacked, cornell, panes, arealight, glow, layers, arealight_ramp, gi_wall)");
   }
   for (const char* missing : {"/nonexistent/dir/x.gltf", "missing.GLB", "missing.glTF"}) {
     try {
