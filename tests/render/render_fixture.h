@@ -49,6 +49,11 @@ void renderOwnFrame(Renderer& renderer, const ParamSet& params, const std::vecto
 // failure and -1 when there is none.
 double techniqueCounter(const Renderer& renderer, const std::string& technique, const std::string& name);
 
+// True if a pool resource of the renderer's last frame has a name starting with `prefix`.
+bool hasResource(const Renderer& renderer, const std::string& prefix);
+// True if a kept pass of the renderer's last frame has a name starting with `prefix`.
+bool ranPass(const Renderer& renderer, const std::string& prefix);
+
 // Destroys the shared renderers (before the context goes).
 void releaseTestRenderers();
 

@@ -102,6 +102,18 @@ bool projectToPixel(const TestFrame& frame, const glm::vec3& world, int& x, int&
   return x >= 0 && x < frame.width && y >= 0 && y < frame.height;
 }
 
+bool hasResource(const Renderer& renderer, const std::string& prefix) {
+  for (const auto& r : renderer.resources())
+    if (r.name.rfind(prefix, 0) == 0) return true;
+  return false;
+}
+
+bool ranPass(const Renderer& renderer, const std::string& prefix) {
+  for (const auto& p : renderer.lastPasses())
+    if (p.kept && p.name.rfind(prefix, 0) == 0) return true;
+  return false;
+}
+
 } // namespace rtlab
 
 int main(int argc, char** argv) {

@@ -155,18 +155,6 @@ TEST(AreaMc, ALightBelowTheHorizonAddsNothing) {
   EXPECT_GT(sum, 100.0);
 }
 
-bool hasResource(const Renderer& renderer, const std::string& prefix) {
-  for (const auto& res : renderer.resources())
-    if (res.name.rfind(prefix, 0) == 0) return true;
-  return false;
-}
-
-bool ranPass(const Renderer& renderer, const std::string& prefix) {
-  for (const auto& p : renderer.lastPasses())
-    if (p.kept && p.name.rfind(prefix, 0) == 0) return true;
-  return false;
-}
-
 // Off is free: on `arealight` without the technique, and with it on `cornell` (no rectangular
 // light), no area_mc pass runs and neither `arealight` nor an area_mc resource exists; with it on
 // `arealight` both do.

@@ -282,18 +282,6 @@ TEST(Lpv, ErrorAgainstTheReferenceOnCornell) {
   EXPECT_LT(rmse, none);
 }
 
-bool hasResource(const Renderer& renderer, const std::string& prefix) {
-  for (const auto& res : renderer.resources())
-    if (res.name.rfind(prefix, 0) == 0) return true;
-  return false;
-}
-
-bool ranPass(const Renderer& renderer, const std::string& prefix) {
-  for (const auto& p : renderer.lastPasses())
-    if (p.kept && p.name.rfind(prefix, 0) == 0) return true;
-  return false;
-}
-
 // Off is free: without lpv no lpv or light-space G-buffer pass runs and no such resource exists;
 // with it the debug views are culled unless requested, and 0 iterations add no propagation or
 // geometry volume.

@@ -351,18 +351,6 @@ TEST(Rsm, RectangularLightZeroIsAUsageError) {
   }
 }
 
-bool hasResource(const Renderer& renderer, const std::string& prefix) {
-  for (const auto& r : renderer.resources())
-    if (r.name.rfind(prefix, 0) == 0) return true;
-  return false;
-}
-
-bool ranPass(const Renderer& renderer, const std::string& prefix) {
-  for (const auto& p : renderer.lastPasses())
-    if (p.kept && p.name.rfind(prefix, 0) == 0) return true;
-  return false;
-}
-
 // Off is free: without rsm no rsm pass runs and no rsm resource exists; with it both do, and the
 // debug views' passes run only when asked for.
 TEST(Rsm, OffIsFree) {
