@@ -11,6 +11,7 @@
 # between the two measured counts around it (Monte-Carlo error falls as a power of the count), its
 # time interpolated linearly in the count, and the time ratio ltc / that area_mc.
 #   bash bench/arealight_tradeoff.sh [RTLAB] [SIZE] [FRAMES] [SCENE] [REFSPP] [SAMPLES]
+# REF=FILE.exr uses a reference rendered before (the same scene, size and --aov arealight).
 set -euo pipefail
 rtlab=$(realpath "${1:-build/rtlab}") size=${2:-1280x720} frames=${3:-5} scene=${4:-arealight}
 refspp=${5:-1024} samples=${6:-"1 2 4 8 16 32 64 128 256"}
@@ -21,18 +22,10 @@ trap 'rm -rf "$tmp"' EXIT
 source "$(dirname "$0")/tradeoff_common.sh"
 
 common=(--scene "$scene" --size "$size")
-ref=$tmp/ref.exr
-start=$(date +%s)
-"$rtlab" reference "${common[@]}" --aov arealight --spp "$refspp" --out "$ref" 2>/dev/null
-echo "# reference: $refspp spp in $(( $(date +%s) - start )) s" >&2
+reference_of arealight
 {
 echo "scene,technique,setting,ms,bytes,rmse,max_abs"
-run() { # technique setting --set...
-  local t=$1 setting=$2; shift 2
-  local out=$tmp/run.exr stats=$tmp/run.json
-  "$rtlab" render "${common[@]}" -t "$t" --aov arealight --frames "$frames" --stats "$stats" --out "$out" "$@"
-  echo "$scene,$t,$setting,$(cost "$stats" "$t"),$(metric "$ref" "$out" rmse),$(metric "$ref" "$out" max_abs)"
-}
+run() { measure_row arealight "$@"; } # technique setting --set...
 for n in 16 32 64; do
   for e in rational acos; do run ltc "$n/$e" --set ltc.table_size=$n --set ltc.edge=$e; done
 done

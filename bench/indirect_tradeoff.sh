@@ -25,23 +25,10 @@ trap 'rm -rf "$tmp"' EXIT
 source "$(dirname "$0")/tradeoff_common.sh"
 
 common=(--scene "$scene" --size "$size")
-if [[ -n "${REF:-}" ]]; then
-  ref=$(realpath "$REF")
-  echo "# reference: $ref" >&2
-else
-  ref=$tmp/ref.exr
-  start=$(date +%s)
-  "$rtlab" reference "${common[@]}" --aov indirect --spp "$refspp" --out "$ref" 2>/dev/null
-  echo "# reference: $refspp spp in $(( $(date +%s) - start )) s" >&2
-fi
+reference_of indirect
 {
 echo "scene,technique,setting,ms,bytes,rmse,max_abs"
-run() { # technique setting --set...
-  local t=$1 setting=$2; shift 2
-  local out=$tmp/run.exr stats=$tmp/run.json
-  "$rtlab" render "${common[@]}" -t "$t" --aov indirect --frames "$frames" --stats "$stats" --out "$out" "$@"
-  echo "$scene,$t,$setting,$(cost "$stats" "$t"),$(metric "$ref" "$out" rmse),$(metric "$ref" "$out" max_abs)"
-}
+run() { measure_row indirect "$@"; } # technique setting --set...
 for r in $resolutions; do
   for s in $samples; do run rsm "$s/$r" --set rsm.samples=$s --set rsm.resolution=$r; done
 done

@@ -1,4 +1,5 @@
-# Shared by the trade-off benchmarks (bench/transparency_tradeoff.sh, bench/arealight_tradeoff.sh):
+# Shared by the trade-off benchmarks (bench/transparency_tradeoff.sh, bench/arealight_tradeoff.sh,
+# bench/indirect_tradeoff.sh):
 # source it after setting $rtlab (the binary) and $py (Debian's python3).
 
 # ms and bytes of technique $2's passes and resources in stats JSON $1: the sum of the median ms of
@@ -15,3 +16,26 @@ PYEOF
 
 # The metric $3 (rmse, max_abs, ...) of image $2 against image $1 (rtlab compare).
 metric() { "$rtlab" compare "$1" "$2" | awk -v k="$3" '$1 == k {print $2}'; }
+
+# The reference of AOV $1 for "${common[@]}" at $refspp spp, into $ref (under $tmp), unless REF
+# names one rendered before; says which on stderr.
+reference_of() {
+  if [[ -n "${REF:-}" ]]; then
+    ref=$(realpath "$REF")
+    echo "# reference: $ref" >&2
+  else
+    ref=$tmp/ref.exr
+    local start=$(date +%s)
+    "$rtlab" reference "${common[@]}" --aov "$1" --spp "$refspp" --out "$ref" 2>/dev/null
+    echo "# reference: $refspp spp in $(( $(date +%s) - start )) s" >&2
+  fi
+}
+
+# One CSV row: AOV $1 of technique $2 (setting label $3, then its --set options) over $frames
+# frames, its cost and its error against $ref.
+measure_row() {
+  local aov=$1 t=$2 setting=$3; shift 3
+  local out=$tmp/run.exr stats=$tmp/run.json
+  "$rtlab" render "${common[@]}" -t "$t" --aov "$aov" --frames "$frames" --stats "$stats" --out "$out" "$@"
+  echo "$scene,$t,$setting,$(cost "$stats" "$t"),$(metric "$ref" "$out" rmse),$(metric "$ref" "$out" max_abs)"
+}
