@@ -119,6 +119,9 @@ void ProgressiveReference::State::run(Job& job) {
     samples = done;
     meanGeneration = job.generation;
     converged = done == job.options.targetSpp;
+    // running() is false once converged: cleared here, in the same critical section that publishes
+    // the converged mean, so that no reader sees a converged snapshot while running() is true.
+    if (converged && !pending) running = false;
   }
 }
 
