@@ -11,25 +11,18 @@ in vec2 vUv;
 uniform sampler2D uPosition;
 uniform sampler2D uGeometry;
 uniform float uMomentBias;
+uniform bool uCentred;
 uniform float uMinPenumbra;
 uniform float uMaxPenumbra;
 uniform float uMaxSearch;
 
 layout(location = 0) out vec4 oValue;
 
+// The box mean of (z, z^2, z^3, z^4), restored from the optimized basis in double.
+dvec4 filteredMoments(vec2 uv, float radius) {
+  dvec4 m = boxMomentsExact(uv, radius);
 #ifdef OPTIMIZED
-// Inverse of the optimized quantization (Peters & Klein 2015, section 4.3).
-const mat4 kRestore = mat4(0.2227744146, 0.1549679261, 0.1451988946, 0.163127443,
-                           0.0771972861, 0.1394629426, 0.2120202157, 0.2591432266,
-                           0.7926986636, 0.7963415838, 0.7258694464, 0.6539092497,
-                           0.0319417555, -0.1722823173, -0.2758014811, -0.3376131734);
-#endif
-
-vec4 filteredMoments(vec2 uv, float radius) {
-  vec4 m = boxMoments(uv, radius);
-#ifdef OPTIMIZED
-  m.x -= 0.035955884801;
-  m = kRestore * m;
+  m = restoreOptimizedMoments(m);
 #endif
   return m;
 }
@@ -51,9 +44,12 @@ void main() {
   } else if (inside && mask > 0.0) {
     float search = clamp(shadowSearchTexels(zR), 1.0, uMaxSearch);
     float zOcc;
-    if (momentBlockerDepth(filteredMoments(coord.xy, search).xy, t, 1e-7, zOcc)) {
+    if (momentBlockerDepth(vec2(filteredMoments(coord.xy, search).xy), t, 1e-7, zOcc)) {
       radius = clamp(shadowPenumbraTexels(zR, uLightNear + zOcc * (uLightFar - uLightNear)), uMinPenumbra, uMaxPenumbra);
-      visibility = 1.0 - hamburger4Msm(filteredMoments(coord.xy, radius), t, uMomentBias);
+      dvec4 m = filteredMoments(coord.xy, radius);
+      // uCentred: the bound from the moments about t (moments.glsl, momentsAbout).
+      visibility = 1.0 - (uCentred ? hamburger4Msm(momentsAbout(m, t, uMomentBias), 0.0, 0.0)
+                                   : hamburger4Msm(vec4(m), t, uMomentBias));
       blockerShown = zOcc;
     }
   }

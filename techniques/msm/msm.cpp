@@ -29,6 +29,10 @@ public:
         ParamSpec::boolean("msm.sat_offset", "Offset before summing", true)
             .withHelp("Subtract 0.5 from the moments before building the fixed-point summed-area table (halves its sums: one more bit)"),
     };
+    info.params.push_back(momentSatBitsParam("msm"));
+    info.params.push_back(ParamSpec::boolean("msm.centred", "Moments about the receiver", false)
+        .withHelp("Shift the box's moments to the receiver's depth in double before the 4MSM bound (the same bound; float "
+                  "no longer cancels on boxes of one depth: README, \"Precision\")"));
     for (auto& spec : softShadowParams("msm", 64.0, 256.0, 256.0)) info.params.push_back(spec);
     info.debugViews = softShadowDebugViews("msm");
     info.debugViews.push_back({"msm.moments", 1, "first channel of the moment map as stored (the optimized transform of z^1..z^4)"});

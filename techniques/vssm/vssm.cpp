@@ -29,6 +29,7 @@ public:
         ParamSpec::real("vssm.bleed_reduction", "Light-bleeding reduction", 0.2, 0.0, 0.95)
             .withHelp("Bound values below this are cut to 0 and the rest rescaled (less bleeding, harder edges)"),
     };
+    info.params.push_back(momentSatBitsParam("vssm"));
     for (auto& spec : softShadowParams("vssm", 64.0, 256.0, 256.0)) info.params.push_back(spec);
     info.debugViews = softShadowDebugViews("vssm");
     info.debugViews.push_back({"vssm.moments", 1, "first moment: mean normalized linear light depth (0 near, 1 far)"});

@@ -50,7 +50,7 @@ inline float store(double v, Storage storage) {
 }
 
 // Peters & Klein 2015, section 4.3 (shaders/shadow/moments.frag's kOptimize, column-major, and the
-// offset of the first moment), and its inverse (shaders/msm/visibility.frag's kRestore).
+// offset of the first moment), and its inverse (moments.glsl's kRestoreOptimized).
 constexpr double kOptimize[4][4] = {{-2.07224649, 13.7948857237, 0.105877704, 9.7924062118},
                                     {32.23703778, -59.4683975703, -1.9077466311, -33.7652110555},
                                     {-68.571074599, 82.0359750338, 9.3496555107, 47.9456096605},
@@ -87,41 +87,56 @@ inline uint32_t fixedPoint(float stored, float offset, float scale) {
   return uint32_t(int32_t(v));
 }
 
+// The same with WIDE (64-bit sums): round((m - offset) * scale) in float, an integer below 2^63.
+inline uint64_t wideFixedPoint(float stored, float offset, float scale) {
+  const float v = std::nearbyint((stored - offset) * scale);
+  return uint64_t(int64_t(v));
+}
+
 // The summed-area table of a square map of `channels`-vector texels (row-major, y up like GL),
-// built as sat.comp builds it: unsigned 32-bit inclusive prefix sums that wrap.
+// built as sat.comp builds it: unsigned inclusive prefix sums that wrap, 32-bit, or 64-bit with
+// `wide` (the low and high words of which the GL table keeps in its left and right halves).
 class SummedAreaTable {
 public:
-  SummedAreaTable(int size, int channels, const std::vector<float>& stored, float offset, float scale)
-      : m_size(size), m_channels(channels), m_sums(size_t(size) * size * channels) {
+  SummedAreaTable(int size, int channels, const std::vector<float>& stored, float offset, float scale, bool wide = false)
+      : m_size(size), m_channels(channels), m_wide(wide), m_sums(size_t(size) * size * channels) {
     for (int y = 0; y < size; ++y)
       for (int c = 0; c < channels; ++c) {
-        uint32_t run = 0;
+        uint64_t run = 0;
         for (int x = 0; x < size; ++x) {
-          run += fixedPoint(stored[index(x, y, c)], offset, scale);
+          run += wide ? wideFixedPoint(stored[index(x, y, c)], offset, scale)
+                      : uint64_t(fixedPoint(stored[index(x, y, c)], offset, scale));
+          if (!wide) run = uint32_t(run);
           m_sums[index(x, y, c)] = run;
         }
       }
     for (int x = 0; x < size; ++x)
       for (int c = 0; c < channels; ++c)
-        for (int y = 1; y < size; ++y) m_sums[index(x, y, c)] += m_sums[index(x, y - 1, c)];
+        for (int y = 1; y < size; ++y) {
+          m_sums[index(x, y, c)] += m_sums[index(x, y - 1, c)];
+          if (!wide) m_sums[index(x, y, c)] = uint32_t(m_sums[index(x, y, c)]);
+        }
   }
   int size() const { return m_size; }
   int channels() const { return m_channels; }
-  uint32_t at(int x, int y, int c) const { return x < 0 || y < 0 ? 0u : m_sums[index(x, y, c)]; }
-  const std::vector<uint32_t>& sums() const { return m_sums; }
+  bool wide() const { return m_wide; }
+  uint64_t at(int x, int y, int c) const { return x < 0 || y < 0 ? 0u : m_sums[index(x, y, c)]; }
 
   // boxMoments' four-corner difference over the inclusive texel box [lo, hi], wrapped, as signed.
-  Vec4<int32_t> boxSum(int lox, int loy, int hix, int hiy) const {
-    Vec4<int32_t> s{};
-    for (int c = 0; c < m_channels; ++c)
-      s[c] = int32_t(at(hix, hiy, c) - at(lox - 1, hiy, c) - at(hix, loy - 1, c) + at(lox - 1, loy - 1, c));
+  Vec4<int64_t> boxSum(int lox, int loy, int hix, int hiy) const {
+    Vec4<int64_t> s{};
+    for (int c = 0; c < m_channels; ++c) {
+      const uint64_t d = at(hix, hiy, c) - at(lox - 1, hiy, c) - at(hix, loy - 1, c) + at(lox - 1, loy - 1, c);
+      s[c] = m_wide ? int64_t(d) : int64_t(int32_t(uint32_t(d)));
+    }
     return s;
   }
 
 private:
   size_t index(int x, int y, int c) const { return (size_t(y) * m_size + x) * m_channels + c; }
   int m_size, m_channels;
-  std::vector<uint32_t> m_sums;
+  bool m_wide;
+  std::vector<uint64_t> m_sums;
 };
 
 // boxMoments' texel box for a lookup at uv (in [0,1]) of half-width `radius` texels: the float
@@ -140,15 +155,17 @@ inline TexelBox texelBox(float u, float v, float radius, int size) {
   return b;
 }
 
-// The box mean from its exact sum: vec4(ivec4(sum)) / (area * uSatScale) + uSatOffset.
-template <class T> Vec4<T> boxMean(const Vec4<int32_t>& sum, int area, double scale, double offset) {
+// The box mean from its exact sum: vec4(ivec4(sum)) / (area * uSatScale) + uSatOffset; a 64-bit
+// table's in double, rounded to T at the end (boxMoments with uSatWide).
+template <class T> Vec4<T> boxMean(const Vec4<int64_t>& sum, int area, double scale, double offset, bool wide) {
   Vec4<T> m{};
   const T denominator = T(area) * T(scale);
-  for (int c = 0; c < 4; ++c) m[c] = T(sum[c]) / denominator + T(offset);
+  for (int c = 0; c < 4; ++c)
+    m[c] = wide ? T(double(sum[c]) / (double(area) * scale) + offset) : T(T(sum[c]) / denominator + T(offset));
   return m;
 }
 
-// msm's inverse transform of a box mean in the optimized basis: m.x -= offset; m = kRestore * m.
+// moments.glsl's restoreOptimizedMoments: m.x -= offset; m = kRestore * m.
 template <class T> Vec4<T> restoreOptimized(Vec4<T> m) {
   m[0] -= T(kOptimizeOffset);
   return matTimes(kRestore, m);
@@ -205,6 +222,16 @@ template <class T> T hamburger4Msm(const Vec4<T>& moments, T t, T momentBias) {
   return T(0);
 }
 
+// moments.glsl's momentsAbout: the biased moments about t, E[(z - t)^k], in double, cast to float
+// (msm.centred: hamburger4Msm(momentsAbout(m, t, bias), 0, 0) is the same bound, better conditioned).
+inline Vec4<float> momentsAbout(const Vec4<double>& m, double t, double momentBias) {
+  Vec4<double> b;
+  for (int c = 0; c < 4; ++c) b[c] = m[c] * (1.0 - momentBias) + 0.5 * momentBias;
+  const double s = t, s2 = s * s;
+  return {float(b[0] - s), float(b[1] - 2.0 * s * b[0] + s2), float(b[2] - 3.0 * s * b[1] + 3.0 * s2 * b[0] - s2 * s),
+          float(b[3] - 4.0 * s * b[2] + 6.0 * s2 * b[1] - 4.0 * s2 * s * b[0] + s2 * s2)};
+}
+
 // A moment map with its table, as the techniques build it: `depths` (normalized, row-major) to
 // stored moments to the fixed-point table.
 struct MomentMapModel {
@@ -212,6 +239,7 @@ struct MomentMapModel {
   int moments = 2;        // 2 (vssm) or 4 (msm)
   bool optimized = false; // msm stores and sums the optimized basis
   Storage storage = Storage::Float32;
+  bool wide = false;      // a 64-bit table (`<id>.sat_bits` 64)
   double offset = 0.5;    // uSatOffset (sat_offset on)
   double scale = 131072;  // uSatScale (momentSatScale: 2^17 at the defaults)
   std::vector<float> stored; // `channels()` values per texel, as the moment pass stores them
@@ -225,14 +253,25 @@ struct MomentMapModel {
       for (int c = 0; c < channels(); ++c) stored[i * channels() + c] = store(m[c], storage);
     }
   }
-  SummedAreaTable table() const { return SummedAreaTable(size, channels(), stored, float(offset), float(scale)); }
+  SummedAreaTable table() const { return SummedAreaTable(size, channels(), stored, float(offset), float(scale), wide); }
 
   // The box's raw moment means (z, z^2[, z^3, z^4]) in arithmetic T from the table: boxMoments,
   // then, for msm, the inverse transform.
   template <class T> Vec4<T> boxMoments(const SummedAreaTable& sat, const TexelBox& box) const {
-    Vec4<T> m = boxMean<T>(sat.boxSum(box.lox, box.loy, box.hix, box.hiy), box.area(), scale, offset);
+    Vec4<T> m = boxMean<T>(sat.boxSum(box.lox, box.loy, box.hix, box.hiy), box.area(), scale, offset, sat.wide());
     if (moments == 4 && optimized) m = restoreOptimized(m);
     return m;
+  }
+
+  // The exact mean of the stored moments over the box in double (no table rounding), restored: the
+  // fp64 model's input, what a lossless table would give.
+  Vec4<double> storedMean(const TexelBox& box) const {
+    Vec4<double> m{};
+    for (int y = box.loy; y <= box.hiy; ++y)
+      for (int x = box.lox; x <= box.hix; ++x)
+        for (int c = 0; c < channels(); ++c) m[c] += double(stored[(size_t(y) * size + x) * channels() + c]);
+    for (double& v : m) v /= double(box.area());
+    return moments == 4 && optimized ? restoreOptimized(m) : m;
   }
 };
 

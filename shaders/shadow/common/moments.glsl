@@ -4,26 +4,86 @@
 uniform usampler2D uSat;      // inclusive prefix sums of round((moments - uSatOffset) * uSatScale)
 uniform vec4 uSatOffset;
 uniform float uSatScale;      // fixed-point units per moment unit (a power of two)
+uniform bool uSatWide;        // 64-bit sums: low words left, high words right (sat.comp, WIDE)
 
 uvec4 satAt(ivec2 p) {
   if (p.x < 0 || p.y < 0) return uvec4(0u);
   return texelFetch(uSat, p, 0);
 }
+// The high words of a 64-bit table's sum at p (0 left of or below the map).
+uvec4 satHighAt(ivec2 p) {
+  if (p.x < 0 || p.y < 0) return uvec4(0u);
+  return texelFetch(uSat, p + ivec2(int(uMapResolution), 0), 0);
+}
 
-// Mean of the moments over the texel box of half-width `radius` (texels) around uv, clipped to
-// the map. At least one texel. The four-corner difference wraps modulo 2^32 like the table's
-// sums, so the box's sum is exact (sat.comp); only its conversion to float rounds, relative to
-// the box's own sum.
-vec4 boxMoments(vec2 uv, float radius) {
+// The texel box of half-width `radius` (texels) around uv, clipped to the map, at least one
+// texel: its table corners (hi, and left of, below and diagonally below-left of lo) and area.
+struct SatBox {
+  ivec2 hi, c10, c01, c00;
+  float area;
+};
+SatBox satBox(vec2 uv, float radius) {
   int size = int(uMapResolution);
   vec2 center = uv * uMapResolution;
   float r = max(radius, 0.5);
   ivec2 lo = clamp(ivec2(floor(center - r)), ivec2(0), ivec2(size - 1));
   ivec2 hi = clamp(ivec2(floor(center + r)), ivec2(0), ivec2(size - 1));
   hi = max(hi, lo);
-  uvec4 sum = satAt(hi) - satAt(ivec2(lo.x - 1, hi.y)) - satAt(ivec2(hi.x, lo.y - 1)) + satAt(lo - 1);
-  float area = float((hi.x - lo.x + 1) * (hi.y - lo.y + 1));
-  return vec4(ivec4(sum)) / (area * uSatScale) + uSatOffset;
+  return SatBox(hi, ivec2(lo.x - 1, hi.y), ivec2(hi.x, lo.y - 1), lo - 1, float((hi.x - lo.x + 1) * (hi.y - lo.y + 1)));
+}
+
+// The box's sum from a 32-bit table: the four-corner difference wraps modulo 2^32 like the
+// table's sums, so it is exact (sat.comp).
+ivec4 narrowSum(SatBox b) { return ivec4(satAt(b.hi) - satAt(b.c10) - satAt(b.c01) + satAt(b.c00)); }
+
+// The box's sum from a 64-bit table: the same on (low, high) word pairs, with borrows and carries.
+dvec4 wideSum(SatBox b) {
+  uvec4 borrow1, borrow2, carry;
+  uvec4 low = usubBorrow(satAt(b.hi), satAt(b.c10), borrow1);
+  low = usubBorrow(low, satAt(b.c01), borrow2);
+  low = uaddCarry(low, satAt(b.c00), carry);
+  uvec4 high = satHighAt(b.hi) - satHighAt(b.c10) - satHighAt(b.c01) + satHighAt(b.c00) - borrow1 - borrow2 + carry;
+  return dvec4(ivec4(high)) * 4294967296.0LF + dvec4(low);
+}
+
+// Mean of the moments over the texel box of half-width `radius` (texels) around uv. The box's sum
+// is exact; only its conversion to float rounds, relative to the box's own sum. What limits the
+// moments is the 32-bit table's step 1/uSatScale (techniques/vssm/README.md, "Precision").
+vec4 boxMoments(vec2 uv, float radius) {
+  SatBox b = satBox(uv, radius);
+  if (uSatWide) return vec4(wideSum(b) / (double(b.area) * double(uSatScale)) + dvec4(uSatOffset));
+  return vec4(narrowSum(b)) / (b.area * uSatScale) + uSatOffset;
+}
+
+// The same mean in double, from the exact sum (for msm's centred moments).
+dvec4 boxMomentsExact(vec2 uv, float radius) {
+  SatBox b = satBox(uv, radius);
+  dvec4 sum = uSatWide ? wideSum(b) : dvec4(narrowSum(b));
+  return sum / (double(b.area) * double(uSatScale)) + dvec4(uSatOffset);
+}
+
+// Inverse of the optimized quantization of 4 moments (Peters & Klein 2015, section 4.3; the
+// forward transform is in shaders/shadow/moments.frag): (z, z^2, z^3, z^4) from the transformed
+// ones, in double. Affine, so it also restores a box mean of transformed moments.
+const dmat4 kRestoreOptimized = dmat4(0.2227744146LF, 0.1549679261LF, 0.1451988946LF, 0.163127443LF,
+                                      0.0771972861LF, 0.1394629426LF, 0.2120202157LF, 0.2591432266LF,
+                                      0.7926986636LF, 0.7963415838LF, 0.7258694464LF, 0.6539092497LF,
+                                      0.0319417555LF, -0.1722823173LF, -0.2758014811LF, -0.3376131734LF);
+dvec4 restoreOptimizedMoments(dvec4 m) {
+  m.x -= 0.035955884801LF;
+  return kRestoreOptimized * m;
+}
+
+// The moments (E[z], .., E[z^4]) about t, E[(z - t)^k], in double, cast to float: the input of
+// hamburger4Msm(about, 0.0, 0.0) for msm's centred moments (`msm.centred`;
+// techniques/msm/README.md, "Precision"). The moment bias is applied first, as hamburger4Msm
+// applies it: the result is the same bound in exact arithmetic, but a box of one depth near t then
+// has small, well-scaled moments instead of b2 - b1^2 cancelling to a few float steps.
+vec4 momentsAbout(dvec4 m, float t, float momentBias) {
+  dvec4 b = mix(m, dvec4(0.5), double(momentBias));
+  double s = double(t), s2 = s * s;
+  return vec4(b.x - s, b.y - 2.0 * s * b.x + s2, b.z - 3.0 * s * b.y + 3.0 * s2 * b.x - s2 * s,
+              b.w - 4.0 * s * b.z + 6.0 * s2 * b.y - 4.0 * s2 * s * b.x + s2 * s2);
 }
 
 // P(depth >= t) <= sigma^2 / (sigma^2 + (t - mu)^2) for t > mu (Chebyshev); 1 otherwise.

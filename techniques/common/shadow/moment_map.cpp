@@ -16,6 +16,17 @@ namespace rtlab {
 
 std::string momentSatResource(const std::string& technique) { return technique + ".sat"; }
 
+ParamSpec momentSatBitsParam(const std::string& technique) {
+  return ParamSpec::choice(technique + ".sat_bits", "Table bits", {"32", "64"}, 0)
+      .withFlags(kParamRealloc)
+      .withHelp("Integer width of the summed-area table's sums: 64 keeps each stored moment exactly (the 32-bit "
+                "table's step is what limits a small box's variance), at twice the table's memory and passes");
+}
+
+int momentSatBits(const ParamSet& params, const std::string& technique) {
+  return params.getEnumName(technique + ".sat_bits") == "64" ? 64 : 32;
+}
+
 float momentSatScale(const ParamSet& params, const MomentMapConfig& config) {
   // The widest box a lookup makes: boxMoments (shaders/shadow/common/moments.glsl) takes at least half a
   // texel; the visibility shaders clamp the search to [1, max_search] and the filter to
@@ -30,9 +41,11 @@ float momentSatScale(const ParamSet& params, const MomentMapConfig& config) {
   // Every moment lies in [0,1] (z^k of z in [0,1], and the optimized transform maps [0,1] into
   // [0,1]), so |moment - offset| <= 0.5 with the offset and 1 without; 1% margin for 16-bit
   // storage's rounding. A box's sum, with up to half a unit of rounding per texel, must fit in
-  // a signed 32-bit integer.
+  // a signed 32-bit integer (64-bit: 2^49 at the defaults, 2^45 at the widest box; a float moment
+  // minus the offset, times such a power of two, is an integer, so each texel's value is exact).
   const double magnitude = (config.satOffset ? 0.5 : 1.0) * 1.01;
-  const double units = (std::ldexp(1.0, 31) / (width * width) - 0.5) / magnitude;
+  const int bits = momentSatBits(params, id);
+  const double units = (std::ldexp(1.0, bits - 1) / (width * width) - 0.5) / magnitude;
   return float(std::ldexp(1.0, int(std::floor(std::log2(units)))));
 }
 
@@ -52,6 +65,9 @@ void addMomentMapPasses(FrameGraph& frame, const MomentMapConfig& config) {
   depthDesc.format = GL_DEPTH_COMPONENT24;
   gl::TextureDesc satDesc = momentDesc;
   satDesc.format = config.moments == 2 ? GL_RG32UI : GL_RGBA32UI;
+  // 64-bit sums: the low words in the left half, the high words in the right half (sat.comp, WIDE).
+  const bool wide = momentSatBits(frame.params(), config.technique) == 64;
+  if (wide) satDesc.width = 2 * size;
   const std::string satImageFormat = config.moments == 2 ? "rg32ui" : "rgba32ui";
   std::vector<std::string> defines = {"MOMENTS " + std::to_string(config.moments)};
   if (config.optimized) defines.push_back("OPTIMIZED");
@@ -97,8 +113,9 @@ void addMomentMapPasses(FrameGraph& frame, const MomentMapConfig& config) {
   // scans, texture fetch before the first pass that samples the table.
   const glm::vec4 satOffset(config.satOffset ? 0.5f : 0.0f);
   const auto satProgram = [=](PassContext& ctx, int axis) -> gl::Program& {
-    gl::Program& p = ctx.programs.get(
-        {{"shadow/sat.comp"}, {"AXIS " + std::to_string(axis), "FORMAT " + satImageFormat}, "sat"});
+    std::vector<std::string> satDefines = {"AXIS " + std::to_string(axis), "FORMAT " + satImageFormat};
+    if (wide) satDefines.push_back("WIDE");
+    gl::Program& p = ctx.programs.get({{"shadow/sat.comp"}, satDefines, "sat"});
     return p.set("uSize", size).set("uOffset", satOffset).set("uScale", momentSatScale(ctx.params, config));
   };
   const ComputeGrid lines = ComputeGrid::fixed({size, 1, 1});
@@ -138,7 +155,10 @@ void bindMomentSat(PassContext& ctx, gl::Program& p, const MomentMapConfig& conf
   ctx.texture(momentSatResource(config.technique)).bind(GLuint(unit));
   p.set("uSat", unit)
       .set("uSatOffset", glm::vec4(config.satOffset ? 0.5f : 0.0f))
-      .set("uSatScale", momentSatScale(ctx.params, config));
+      .set("uSatScale", momentSatScale(ctx.params, config))
+      .set("uSatWide", momentSatBits(ctx.params, config.technique) == 64);
+  // 4 moments (msm): the bound from the moments about the receiver (moments.glsl, momentsAbout).
+  if (config.moments == 4) p.set("uCentred", ctx.params.getBool(config.technique + ".centred"));
 }
 
 } // namespace rtlab
