@@ -62,6 +62,14 @@ double writeHeatmap(const std::string& path, const Image& a, const Image& b, con
   return scale;
 }
 
+// --over: the valid pixels whose |B - A| (mean over channels, as the heat map) exceeds `threshold`.
+std::size_t countOver(const Image& a, const Image& b, double threshold) {
+  const Image error = absoluteErrorImage(a, b);
+  std::size_t over = 0;
+  for (std::size_t i = 0; i < error.pixels.size(); ++i) over += error.mask[i] > 0.0f && double(error.pixels[i]) > threshold;
+  return over;
+}
+
 } // namespace
 
 int runCompare(int argc, char** argv) {
@@ -69,11 +77,12 @@ int runCompare(int argc, char** argv) {
       {"--json", "", false, "", "machine-readable output (docs/contract.md schema)"},
       {"--heatmap", "", true, "OUT.png", "write |B - A| per pixel as a heat map (magma, 0 .. --heatmap-max)"},
       {"--heatmap-max", "", true, "E", "the heat map's top: error E and above is brightest (default: max_abs)"},
+      {"--over", "", true, "E", "also count the valid pixels whose |B - A| (mean over channels) exceeds E"},
   };
   Args args("compare", specs, argc, argv, 2, 2);
   if (args.help()) {
     std::cout << formatHelp(
-        "rtlab compare A B [--json] [--heatmap OUT.png [--heatmap-max E]]",
+        "rtlab compare A B [--json] [--heatmap OUT.png [--heatmap-max E]] [--over E]",
         "Compares image B with image A (.png, .exr or .pfm) over their valid pixels: finite in both, and\n"
         "A = 1 where a file has an alpha channel. Prints RMSE, PSNR (peak 1; none when identical), SSIM,\n"
         "FLIP (LDR, 67 pixels per degree), the largest absolute difference, the count of NaN/Inf pixels\n"
@@ -81,7 +90,8 @@ int runCompare(int argc, char** argv) {
         "invalid or of another size. Warns (exit still 0) when a PNG is compared with an EXR/PFM or\n"
         "the channel counts differ. --heatmap writes the per-pixel absolute error, mean over the\n"
         "channels, from 0 (black) to --heatmap-max (brightest; default the largest error) on the\n"
-        "magma colour map, invalid pixels gray. See docs/metrics.md and docs/cli.md.",
+        "magma colour map, invalid pixels gray. --over E adds the count and the fraction of the valid\n"
+        "pixels whose error (the heat map's) exceeds E. See docs/metrics.md and docs/cli.md.",
         specs);
     return 0;
   }
@@ -101,6 +111,8 @@ int runCompare(int argc, char** argv) {
     if (!args.has("--heatmap")) usageError("--heatmap-max needs --heatmap OUT.png");
     heatmapMax = parsePositiveNumber("--heatmap-max", args.get("--heatmap-max"));
   }
+  std::optional<double> over;
+  if (args.has("--over")) over = parsePositiveNumber("--over", args.get("--over"));
   const Image a = readInput(pathA);
   const Image b = readInput(pathB);
   if (a.width != b.width || a.height != b.height)
@@ -114,10 +126,13 @@ int runCompare(int argc, char** argv) {
   options.displayEncoded = isPng(pathA) && isPng(pathB);
   const Metrics m = computeMetrics(a, b, options);
   const double heatmapScale = heatmapPath.empty() ? 0.0 : writeHeatmap(heatmapPath, a, b, m, heatmapMax);
+  const std::size_t overCount = over ? countOver(a, b, *over) : 0;
+  const double overFraction = m.validPixels ? double(overCount) / double(m.validPixels) : 0.0;
 
   if (args.has("--json")) {
     nlohmann::ordered_json j = metricsToJson(m);
     if (!heatmapPath.empty()) j["heatmap"] = {{"file", heatmapPath}, {"max", heatmapScale}};
+    if (over) j["over"] = {{"threshold", *over}, {"pixels", overCount}, {"fraction", overFraction}};
     std::cout << j.dump(2) << "\n";
     return 0;
   }
@@ -130,6 +145,9 @@ int runCompare(int argc, char** argv) {
             << "max_abs       " << number(m.maxAbs) << "\n"
             << "nan_count     " << m.nanCount << "\n"
             << "valid_pixels  " << m.validPixels << "\n";
+  if (over)
+    std::cout << "over          " << overCount << " (" << number(overFraction) << " of the valid pixels above " << number(*over)
+              << ")\n";
   if (!heatmapPath.empty())
     std::cout << "heatmap       " << heatmapPath << " (|B - A|, mean over channels: 0 black .. " << formatNumber(heatmapScale)
               << " brightest, magma; invalid pixels gray)\n";

@@ -92,6 +92,7 @@ int runList(int argc, char** argv) {
       for (const auto& p : e.info.params) tj["params"].push_back(paramSpecToJson(p));
       tj["aovs"] = nlohmann::ordered_json::array();
       for (const auto& v : e.info.debugViews) tj["aovs"].push_back(v.name);
+      tj["showcase_scene"] = e.info.showcaseScene;
       techArray.push_back(tj);
     }
     j["techniques"] = techArray;

@@ -148,4 +148,29 @@ TEST_F(CompareCli, Help) {
   EXPECT_NE(r.out.find("rtlab compare A B"), std::string::npos) << r.out;
 }
 
+// --over E: the valid pixels whose |B - A| exceeds E, counted and as a fraction of the valid ones
+// (the mask from A's alpha leaves the background out); E must be a positive number.
+TEST_F(CompareCli, OverCountsPixelsAboveTheThreshold) {
+  rtlab::Image a(4, 4, 1), b(4, 4, 1);
+  for (std::size_t i = 0; i < a.pixelCount(); ++i) a.pixels[i] = b.pixels[i] = 0.5f;
+  a.mask.assign(a.pixelCount(), 1.0f);
+  a.mask[0] = 0.0f;
+  b.pixels[0] = 9.0f;  // background: not counted
+  b.pixels[3] = 0.8f;  // over 0.1
+  b.pixels[7] = 0.55f; // under 0.1
+  rtlab::writeImage(path("a.exr"), a);
+  rtlab::writeImage(path("b.exr"), b);
+  const auto r = compare({path("a.exr"), path("b.exr"), "--json", "--over", "0.1"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["over"]["pixels"], 1);
+  EXPECT_DOUBLE_EQ(j["over"]["threshold"].get<double>(), 0.1);
+  EXPECT_DOUBLE_EQ(j["over"]["fraction"].get<double>(), 1.0 / 15.0);
+  const auto text = compare({path("a.exr"), path("b.exr"), "--over", "0.01"});
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("over          2 ("), std::string::npos) << text.out;
+  expectError({path("a.exr"), path("b.exr"), "--over", "0"}, 2, "--over");
+  expectError({path("a.exr"), path("b.exr"), "--over", "x"}, 2, "--over");
+}
+
 } // namespace

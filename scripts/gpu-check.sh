@@ -1,0 +1,141 @@
+#!/usr/bin/env bash
+# Cross-driver check (issue 19; docs/testing.md, "GPU check"): every registered technique's data AOV
+# (the stage's output: visibility, ao, indirect, arealight, transparency; a post technique's own
+# AOV, e.g. bloom) on its showcase scene, rendered through two GL contexts — by default EGL (on a
+# machine with an NVIDIA GPU and glvnd, the GPU) and OSMesa (Mesa's llvmpipe) — and compared with
+# `rtlab compare --over`, against the per-technique tolerances of scripts/gpu-check-tolerances.tsv.
+# Prints a table (technique, AOV, RMSE, max, fraction of pixels over the pixel threshold,
+# pass/fail) and exits 1 when a technique fails or has no tolerance, 2 on a usage error.
+#
+#   scripts/gpu-check.sh [options]
+#     --rtlab PATH        the binary (default build/rtlab)
+#     --size WxH          frame size (default 640x360)
+#     --out DIR           keep the images and the table there (default: a temporary folder)
+#     --techniques A,B    only these (default: every technique `rtlab list --json` lists)
+#     --tolerances FILE   default scripts/gpu-check-tolerances.tsv
+#     --self-test         EGL and OSMesa may both be llvmpipe (no GPU needed): checks the script,
+#                         the two platforms and the tolerances' format here
+#     --render-only B DIR render the set through backend B (egl|osmesa) into DIR and stop
+#     --compare A B       compare two folders made by --render-only (A: the GPU's, B: llvmpipe's)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+rtlab=build/rtlab
+size=640x360
+out=""
+only=""
+tolerances=scripts/gpu-check-tolerances.tsv
+self_test=0
+render_only=""
+render_dir=""
+compare_a=""
+compare_b=""
+usage() { echo "gpu-check: $1 (see the header of scripts/gpu-check.sh)" >&2; exit 2; }
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --rtlab) rtlab=${2:?}; shift 2 ;;
+    --size) size=${2:?}; shift 2 ;;
+    --out) out=${2:?}; shift 2 ;;
+    --techniques) only=${2:?}; shift 2 ;;
+    --tolerances) tolerances=${2:?}; shift 2 ;;
+    --self-test) self_test=1; shift ;;
+    --render-only) render_only=${2:?}; render_dir=${3:?}; shift 3 ;;
+    --compare) compare_a=${2:?}; compare_b=${3:?}; shift 3 ;;
+    *) usage "unknown option '$1'" ;;
+  esac
+done
+[[ -x $rtlab ]] || usage "no rtlab binary at $rtlab (cmake --build build --target rtlab)"
+[[ -f $tolerances ]] || usage "no tolerance file $tolerances"
+[[ $size =~ ^[0-9]+x[0-9]+$ ]] || usage "--size must be WxH"
+py=$(command -v python3) || usage "python3 is needed"
+work=${out:-$(mktemp -d)}
+mkdir -p "$work"
+
+# technique <TAB> stage <TAB> data AOV <TAB> scene, one line each, from the registry.
+list_jobs() {
+  "$rtlab" list --json | "$py" -c '
+import json, sys
+only = [t for t in sys.argv[1].split(",") if t]
+d = json.load(sys.stdin)
+aov = {s["id"]: (s["aov"] or {}).get("name") for s in d["stages"]}
+known = {t["id"] for t in d["techniques"]}
+for t in only:
+    if t not in known: sys.exit("gpu-check: unknown technique %r (rtlab list)" % t)
+for t in d["techniques"]:
+    if only and t["id"] not in only: continue
+    name = aov.get(t["stage"]) or (t["id"] if t["id"] in t["aovs"] else "color")
+    print("\t".join([t["id"], t["stage"], name, t["showcase_scene"]]))
+' "$only"
+}
+
+# Renders every job through backend $1 into folder $2 (<technique>.exr and <technique>.json).
+render_set() {
+  local backend=$1 dir=$2
+  mkdir -p "$dir"
+  while IFS=$'\t' read -r id stage aov scene; do
+    "$rtlab" render --backend "$backend" --scene "$scene" -t "$id" --aov "$aov" --size "$size" \
+      --out "$dir/$id.exr" --stats "$dir/$id.json" 2>"$dir/$id.log" ||
+      { echo "gpu-check: $id failed to render through $backend:" >&2; cat "$dir/$id.log" >&2; return 1; }
+  done < "$work/jobs.tsv"
+}
+
+renderer_of() { "$py" -c 'import json,sys; print(json.load(open(sys.argv[1]))["renderer"])' "$1"; }
+
+list_jobs > "$work/jobs.tsv"
+[[ -s $work/jobs.tsv ]] || usage "no technique to check"
+
+if [[ -n $render_only ]]; then
+  render_set "$render_only" "$render_dir"
+  echo "gpu-check: rendered $(wc -l < "$work/jobs.tsv") techniques through $render_only ($(renderer_of "$render_dir/$(head -1 "$work/jobs.tsv" | cut -f1).json")) into $render_dir"
+  exit 0
+fi
+
+if [[ -n $compare_a ]]; then
+  gpu=$compare_a ref=$compare_b
+else
+  gpu=$work/egl ref=$work/osmesa
+  render_set egl "$gpu"
+  render_set osmesa "$ref"
+fi
+first=$(head -1 "$work/jobs.tsv" | cut -f1)
+gpu_renderer=$(renderer_of "$gpu/$first.json")
+ref_renderer=$(renderer_of "$ref/$first.json")
+echo "gpu-check: A = $gpu_renderer, B = $ref_renderer, $size"
+if [[ $self_test == 0 && $gpu_renderer == *llvmpipe* ]]; then
+  echo "gpu-check: side A rendered on llvmpipe, not a GPU (EGL found Mesa: see docs/testing.md, \"GPU check\"; --self-test to accept)" >&2
+  exit 1
+fi
+
+# The table: each technique's compare against its tolerances.
+"$py" - "$work/jobs.tsv" "$tolerances" "$gpu" "$ref" "$rtlab" "$work/table.md" <<'PYEOF'
+import json, subprocess, sys
+jobs, tolerance_file, gpu, ref, rtlab, table = sys.argv[1:]
+tolerances = {}
+for n, line in enumerate(open(tolerance_file), 1):
+    line = line.split("#", 1)[0].strip()
+    if not line: continue
+    f = line.split()
+    if len(f) != 4: sys.exit("gpu-check: %s:%d: expected: technique rmse pixel fraction" % (tolerance_file, n))
+    tolerances[f[0]] = tuple(float(x) for x in f[1:])
+rows, failed = [], 0
+for line in open(jobs):
+    tid, stage, aov, scene = line.rstrip("\n").split("\t")
+    tol = tolerances.get(tid)
+    if tol is None:
+        rows.append((tid, aov, scene, "-", "-", "-", "FAIL: no tolerance in " + tolerance_file)); failed += 1; continue
+    rmse_max, pixel, fraction_max = tol
+    m = json.loads(subprocess.run([rtlab, "compare", "%s/%s.exr" % (gpu, tid), "%s/%s.exr" % (ref, tid), "--json",
+                                   "--over", repr(pixel)], check=True, capture_output=True, text=True).stdout)
+    rmse, mx, frac = m["rmse"], m["max_abs"], m["over"]["fraction"]
+    ok = rmse is not None and rmse <= rmse_max and frac <= fraction_max and m["nan_count"] == 0
+    failed += not ok
+    verdict = "pass" if ok else "FAIL (rmse <= %g, fraction over %g <= %g%s)" % (
+        rmse_max, pixel, fraction_max, "" if m["nan_count"] == 0 else ", NaN")
+    rows.append((tid, aov, scene, "%.5f" % rmse, "%.4f" % mx, "%.5f (> %g)" % (frac, pixel), verdict))
+with open(table, "w") as t:
+    t.write("| technique | AOV | scene | RMSE | max | fraction over | result |\n|---|---|---|---:|---:|---:|---|\n")
+    for r in rows: t.write("| " + " | ".join(r) + " |\n")
+print(open(table).read(), end="")
+print("gpu-check: %d of %d techniques failed" % (failed, len(rows)))
+sys.exit(1 if failed else 0)
+PYEOF
