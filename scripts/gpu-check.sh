@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Cross-driver check (issue 19; docs/testing.md, "GPU check"): every registered technique's data AOV
-# (the stage's output: visibility, ao, indirect, arealight, transparency; a post technique's own
-# AOV, e.g. bloom) on its showcase scene, rendered through two GL contexts — by default EGL (on a
+# Cross-driver check (issue 19; docs/performance.md, "GPU check (scripts/gpu-check.sh)"): every
+# registered technique's data AOV (the stage's output: visibility, ao, indirect, arealight,
+# transparency; a post technique's own AOV, e.g. bloom) on its showcase scene, rendered through two GL contexts — by default EGL (on a
 # machine with an NVIDIA GPU and glvnd, the GPU) and OSMesa (Mesa's llvmpipe) — and compared with
 # `rtlab compare --over`, against the per-technique tolerances of scripts/gpu-check-tolerances.tsv.
 # Prints a table (technique, AOV, RMSE, max, fraction of pixels over the pixel threshold,
@@ -102,7 +102,7 @@ gpu_renderer=$(renderer_of "$gpu/$first.json")
 ref_renderer=$(renderer_of "$ref/$first.json")
 echo "gpu-check: A = $gpu_renderer, B = $ref_renderer, $size"
 if [[ $self_test == 0 && $gpu_renderer == *llvmpipe* ]]; then
-  echo "gpu-check: side A rendered on llvmpipe, not a GPU (EGL found Mesa: see docs/testing.md, \"GPU check\"; --self-test to accept)" >&2
+  echo "gpu-check: side A rendered on llvmpipe, not a GPU (EGL found Mesa: see docs/performance.md, \"GPU check (scripts/gpu-check.sh)\"; --self-test to accept)" >&2
   exit 1
 fi
 

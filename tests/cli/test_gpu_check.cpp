@@ -1,5 +1,6 @@
 // The moment techniques under both headless platforms, and scripts/gpu-check.sh (issue 19;
-// docs/testing.md, "GPU check"). One process has one GL platform, so the binary runs twice.
+// docs/performance.md, "GPU check (scripts/gpu-check.sh)"). One process has one GL platform, so
+// the binary runs twice.
 #include "process.h"
 
 #include <nlohmann/json.hpp>
