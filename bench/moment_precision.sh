@@ -40,7 +40,7 @@ for run in $(seq "$runs"); do
         "$binary" render --scene "$scene" --size 640x360 -t "$t" --aov visibility --frames 5 --stats "$stats" \
           --out "$img" "${sets[@]}" 2>/dev/null
         label=after; [[ $binary == "$rtlab" ]] || label=before
-        echo "$scene,$label,$variant,$run,$(cost "$stats" "$t" | cut -d, -f1),$(metric "$ref" "$img" rmse),$(metric "$ref" "$img" max_abs)" \
+        echo "$scene,$label,${variant//,/+},$run,$(cost "$stats" "$t" | cut -d, -f1),$(metric "$ref" "$img" rmse),$(metric "$ref" "$img" max_abs)" \
           >> "$out/rows.csv"
       done
     done

@@ -13,10 +13,12 @@
 #     --out DIR           keep the images and the table there (default: a temporary folder)
 #     --techniques A,B    only these (default: every technique `rtlab list --json` lists)
 #     --tolerances FILE   default scripts/gpu-check-tolerances.tsv
+#     --set KEY=VALUE     a parameter for every render (repeatable; e.g. msm.centred=true)
 #     --self-test         EGL and OSMesa may both be llvmpipe (no GPU needed): checks the script,
 #                         the two platforms and the tolerances' format here
 #     --render-only B DIR render the set through backend B (egl|osmesa) into DIR and stop
-#     --compare A B       compare two folders made by --render-only (A: the GPU's, B: llvmpipe's)
+#     --compare A B       compare two folders made by --render-only (A: the GPU's, B: llvmpipe's);
+#                         the way to use a GPU machine without Mesa (render there, compare here)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -30,6 +32,7 @@ render_only=""
 render_dir=""
 compare_a=""
 compare_b=""
+sets=()
 usage() { echo "gpu-check: $1 (see the header of scripts/gpu-check.sh)" >&2; exit 2; }
 while [[ $# -gt 0 ]]; do
   case $1 in
@@ -38,6 +41,7 @@ while [[ $# -gt 0 ]]; do
     --out) out=${2:?}; shift 2 ;;
     --techniques) only=${2:?}; shift 2 ;;
     --tolerances) tolerances=${2:?}; shift 2 ;;
+    --set) sets+=(--set "${2:?}"); shift 2 ;;
     --self-test) self_test=1; shift ;;
     --render-only) render_only=${2:?}; render_dir=${3:?}; shift 3 ;;
     --compare) compare_a=${2:?}; compare_b=${3:?}; shift 3 ;;
@@ -74,7 +78,7 @@ render_set() {
   mkdir -p "$dir"
   while IFS=$'\t' read -r id stage aov scene; do
     "$rtlab" render --backend "$backend" --scene "$scene" -t "$id" --aov "$aov" --size "$size" \
-      --out "$dir/$id.exr" --stats "$dir/$id.json" 2>"$dir/$id.log" ||
+      --out "$dir/$id.exr" --stats "$dir/$id.json" "${sets[@]}" 2>"$dir/$id.log" ||
       { echo "gpu-check: $id failed to render through $backend:" >&2; cat "$dir/$id.log" >&2; return 1; }
   done < "$work/jobs.tsv"
 }

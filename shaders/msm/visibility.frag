@@ -18,8 +18,16 @@ uniform float uMaxSearch;
 
 layout(location = 0) out vec4 oValue;
 
-// The box mean of (z, z^2, z^3, z^4), restored from the optimized basis in double.
-dvec4 filteredMoments(vec2 uv, float radius) {
+// The box mean of (z, z^2, z^3, z^4), restored from the optimized basis: in float, and in double
+// for msm.centred.
+vec4 filteredMoments(vec2 uv, float radius) {
+  vec4 m = boxMoments(uv, radius);
+#ifdef OPTIMIZED
+  m = restoreOptimizedMoments(m);
+#endif
+  return m;
+}
+dvec4 filteredMomentsExact(vec2 uv, float radius) {
   dvec4 m = boxMomentsExact(uv, radius);
 #ifdef OPTIMIZED
   m = restoreOptimizedMoments(m);
@@ -44,12 +52,11 @@ void main() {
   } else if (inside && mask > 0.0) {
     float search = clamp(shadowSearchTexels(zR), 1.0, uMaxSearch);
     float zOcc;
-    if (momentBlockerDepth(vec2(filteredMoments(coord.xy, search).xy), t, 1e-7, zOcc)) {
+    if (momentBlockerDepth(filteredMoments(coord.xy, search).xy, t, 1e-7, zOcc)) {
       radius = clamp(shadowPenumbraTexels(zR, uLightNear + zOcc * (uLightFar - uLightNear)), uMinPenumbra, uMaxPenumbra);
-      dvec4 m = filteredMoments(coord.xy, radius);
       // uCentred: the bound from the moments about t (moments.glsl, momentsAbout).
-      visibility = 1.0 - (uCentred ? hamburger4Msm(momentsAbout(m, t, uMomentBias), 0.0, 0.0)
-                                   : hamburger4Msm(vec4(m), t, uMomentBias));
+      visibility = 1.0 - (uCentred ? hamburger4Msm(momentsAbout(filteredMomentsExact(coord.xy, radius), t, uMomentBias), 0.0, 0.0)
+                                   : hamburger4Msm(filteredMoments(coord.xy, radius), t, uMomentBias));
       blockerShown = zOcc;
     }
   }

@@ -174,18 +174,15 @@ Outcome check(const Case& c) {
     const double model = bound(map.boxMoments<double>(sat, l.boxes[i]), t);
     const double lossless = bound(map.storedMean(l.boxes[i]), t);
     out.maxModel = std::max(out.maxModel, std::abs(gpu - model));
-    // The float model of the shader's path (moments restored in double, then float).
-    const Vec4<double> md = map.boxMoments<double>(sat, l.boxes[i]);
+    // The float model of the shader's path (centred: the moments in double, then about t in float).
+    const Vec4<float> mf = map.boxMoments<float>(sat, l.boxes[i]);
     double floatModel = 0;
-    if (!msm) {
-      const Vec4<float> mf = map.boxMoments<float>(sat, l.boxes[i]);
+    if (!msm)
       floatModel = chebyshevUpperBound(mf[0], mf[1], float(t), float(knob));
-    } else if (c.centred) {
-      floatModel = 1.0 - hamburger4Msm(momentsAbout(md, t, knob), 0.0f, 0.0f);
-    } else {
-      const Vec4<float> mf{float(md[0]), float(md[1]), float(md[2]), float(md[3])};
+    else if (c.centred)
+      floatModel = 1.0 - hamburger4Msm(momentsAbout(map.boxMoments<double>(sat, l.boxes[i]), t, knob), 0.0f, 0.0f);
+    else
       floatModel = 1.0 - hamburger4Msm(mf, float(t), float(knob));
-    }
     out.overFloat += std::abs(gpu - floatModel) > kBound;
     out.overModel += std::abs(gpu - model) > kBound;
     out.overLossless += std::abs(gpu - lossless) > kBound;

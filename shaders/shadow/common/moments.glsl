@@ -64,7 +64,8 @@ dvec4 boxMomentsExact(vec2 uv, float radius) {
 
 // Inverse of the optimized quantization of 4 moments (Peters & Klein 2015, section 4.3; the
 // forward transform is in shaders/shadow/moments.frag): (z, z^2, z^3, z^4) from the transformed
-// ones, in double. Affine, so it also restores a box mean of transformed moments.
+// ones, in double, or in float as before issue 19. Affine, so it also restores a box mean of
+// transformed moments.
 const dmat4 kRestoreOptimized = dmat4(0.2227744146LF, 0.1549679261LF, 0.1451988946LF, 0.163127443LF,
                                       0.0771972861LF, 0.1394629426LF, 0.2120202157LF, 0.2591432266LF,
                                       0.7926986636LF, 0.7963415838LF, 0.7258694464LF, 0.6539092497LF,
@@ -72,6 +73,10 @@ const dmat4 kRestoreOptimized = dmat4(0.2227744146LF, 0.1549679261LF, 0.14519889
 dvec4 restoreOptimizedMoments(dvec4 m) {
   m.x -= 0.035955884801LF;
   return kRestoreOptimized * m;
+}
+vec4 restoreOptimizedMoments(vec4 m) {
+  m.x -= 0.035955884801;
+  return mat4(kRestoreOptimized) * m;
 }
 
 // The moments (E[z], .., E[z^4]) about t, E[(z - t)^k], in double, cast to float: the input of

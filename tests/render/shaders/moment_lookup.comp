@@ -2,8 +2,8 @@
 // The moment techniques' lookups on their real table (tests/render/test_moment_model.cpp): per
 // query (u, v, radius, t), boxMoments and the bound of shaders/shadow/common/moments.glsl, as the
 // visibility shaders call them: MOMENTS 2, Chebyshev's bound (vssm, before the bleeding
-// reduction); MOMENTS 4, 1 - the Hamburger 4MSM bound of the moments restored in double (msm), or
-// of the moments about t (msm.centred).
+// reduction); MOMENTS 4, 1 - the Hamburger 4MSM bound of the restored moments (msm), or of the
+// moments about t restored in double (msm.centred).
 layout(local_size_x = 64) in;
 uniform float uMapResolution;
 #include "shadow/common/moments.glsl"
@@ -23,7 +23,7 @@ void main() {
   float visibility = chebyshevUpperBound(m.xy, q.w, uKnob);
 #else
   dvec4 exact = restoreOptimizedMoments(boxMomentsExact(q.xy, q.z));
-  m = vec4(exact);
+  m = uCentred ? vec4(exact) : restoreOptimizedMoments(m);
   float visibility = 1.0 - (uCentred ? hamburger4Msm(momentsAbout(exact, q.w, uKnob), 0.0, 0.0)
                                      : hamburger4Msm(m, q.w, uKnob));
 #endif
