@@ -28,7 +28,7 @@ public:
             .withHelp("Moments are pulled towards those of a uniform depth distribution by this much (alpha), keeping the Hankel matrix invertible"),
         ParamSpec::boolean("msm.sat_offset", "Offset before summing", true)
             .withHelp("Subtract 0.5 from the moments before building the fixed-point summed-area table (halves its sums: one more bit)"),
-        ParamSpec::real("msm.bleed_reduction", "Light-bleeding reduction", 0.0, 0.0, 0.95)
+        ParamSpec::real("msm.bleed_reduction", "Light-bleeding reduction", 0.1, 0.0, 0.95)
             .withHelp("Visibility below this is cut to 0 and the rest rescaled, as vssm.bleed_reduction (less bleeding, harder edges; 0: the raw 4MSM bound)"),
         ParamSpec::choice("msm.blocker_search", "Blocker search", {"two_moment", "four_moment"}, 0)
             .withFlags(kParamRecompile)
