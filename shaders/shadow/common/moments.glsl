@@ -137,7 +137,8 @@ float hamburger4Msm(vec4 moments, float t, float momentBias) {
 // momentBlockerDepth's p >= 0.99. Every division is guarded (README, "Numerical guards").
 bool momentBlockerDepth4(vec4 moments, float t, float momentBias, out float zOcc) {
   zOcc = t;
-  vec4 b = mix(moments, vec4(0.5), momentBias);
+  // The bias towards b_ref of hamburger4Msm (spelled out: the exercise's mutations find that line).
+  vec4 b = mix(moments, vec4(0.5, 0.5, 0.5, 0.5), momentBias);
   // Cholesky factorization of the Hankel matrix, with floors on both pivots: in exact arithmetic
   // the bias keeps them positive (d22 >= momentBias / 4), in 32-bit floats they can round to 0 or
   // below at the smallest bias.
