@@ -139,6 +139,8 @@ bool momentBlockerDepth4(vec4 moments, float t, float momentBias, out float zOcc
   zOcc = t;
   // The bias towards b_ref of hamburger4Msm (spelled out: the exercise's mutations find that line).
   vec4 b = mix(moments, vec4(0.5, 0.5, 0.5, 0.5), momentBias);
+  // The solve repeats hamburger4Msm's on purpose: that function is the msm exercise's region, which
+  // students rewrite and stub, and the search must not depend on their version of it.
   // Cholesky factorization of the Hankel matrix, with floors on both pivots: in exact arithmetic
   // the bias keeps them positive (d22 >= momentBias / 4), in 32-bit floats they can round to 0 or
   // below at the smallest bias.
