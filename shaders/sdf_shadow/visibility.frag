@@ -57,14 +57,14 @@ March march(vec3 o, vec3 l, float tEnd, float k) {
   // task: h = sdfDistance(o + l * t). A hit (h < hitThreshold(x, t)) sets res = 0.0, hit = true
   // task: and ends the loop. Otherwise, when k > 0 (a light with a size), lower res:
   // task: classic (uImproved false): res = min(res, k * h / t).
-  // task: improved (Quilez 2018): the previous sphere (radius `previous`, `step` behind) and this one
-  // task: (radius h) meet at a point y behind x along the ray, y = (h*h - previous*previous + step*step)
+  // task: improved (Quilez 2018): the previous sphere (radius `previous`, `step` behind x) and this
+  // task: one (radius h) meet at the point t - y on the ray, y = (h*h - previous*previous + step*step)
   // task: / (2*step), at distance d = sqrt(max(0, h*h - y*y)) from the ray (the max(0, .) keeps
-  // task: rounding from making a NaN); res = min(res, k * d / (t - y)) when y < t; a meeting point
-  // task: at or behind the origin (y >= t) bounds nothing. On the first step (previous < 0), and
-  // task: when the spheres do not meet (|y| >= h: the interpolated SDF is not exactly 1-Lipschitz),
-  // task: use the classic estimate. Then set previous = h, step = clamp(h, uMinStep, uMaxStep),
-  // task: t += step, ++i.
+  // task: rounding from making a NaN): res = min(res, k * d / (t - y)). Use it only where the spheres
+  // task: meet between the two samples, 0 <= y <= step and y < h (and y < t); on the first step
+  // task: (previous < 0) and elsewhere (the interpolated SDF is not exactly 1-Lipschitz, and near
+  // task: tangent spheres d collapses to 0: black speckles) use the classic estimate.
+  // task: Then set previous = h, step = clamp(h, uMinStep, uMaxStep), t += step, ++i.
   while (i < uSteps && t < tEnd) {
     vec3 x = o + l * t;
     float h = sdfDistance(x);
@@ -74,14 +74,12 @@ March march(vec3 o, vec3 l, float tEnd, float k) {
       break;
     }
     if (k > 0.0) {
-      if (uImproved && previous >= 0.0) {
-        float y = (h * h - previous * previous + step * step) / (2.0 * step);
-        if (abs(y) >= h) {
-          res = min(res, k * h / t);
-        } else if (y < t) {
-          float d = sqrt(max(0.0, h * h - y * y));
-          res = min(res, k * d / (t - y));
-        }
+      // The improved estimate where the two spheres meet between the samples (0 <= y <= step,
+      // y < h); elsewhere the classic one.
+      float y = uImproved && previous >= 0.0 ? (h * h - previous * previous + step * step) / (2.0 * step) : -1.0;
+      if (y >= 0.0 && y <= step && y < h && y < t) {
+        float d = sqrt(max(0.0, h * h - y * y));
+        res = min(res, k * d / (t - y));
       } else {
         res = min(res, k * h / t);
       }
