@@ -93,7 +93,7 @@ TEST(SdfVolume, GridHasCubicVoxelsAndThePaddingOnEverySide) {
   }
   // Every voxel holds the exact distance of its centre: the corner voxel is outside, the middle one inside.
   EXPECT_GT(v.at(0, 0, 0), v.grid.padding);
-  EXPECT_NEAR(v.at(32, v.grid.dims.y / 2, v.grid.dims.z / 2), -0.5f + 0.5f * v.grid.voxel * 0.0f, 0.5f * v.grid.voxel);
+  EXPECT_NEAR(v.at(32, v.grid.dims.y / 2, v.grid.dims.z / 2), -0.5f, v.grid.voxel);
 }
 
 // ---- rendered ----
@@ -136,15 +136,15 @@ bool allFinite(const Image& v) {
 TEST(SdfShadow, ZeroSizeLightMatchesTheHardShadowMapsFootprint) {
   // Both are hard shadows of the same point light; they differ on the shadow edges (the map's
   // texels against the SDF's trilinear surface) and where the SDF misses thin parts. Measured at
-  // 160x90 on contact: 0.9% of the surface pixels at resolution 256 (edges only), 3.6% at 64
-  // (the 0.08 wall, thinner than a 0.2 voxel, casts no shadow). The bound 2% keeps the edges and
-  // fails for a missing or displaced shadow.
+  // 160x90 on contact against a 2048^2 map: 0.31% of the surface pixels at resolution 256 (edges
+  // only), 1.83% at 64 (the 0.08 wall, thinner than a 0.2 voxel, casts no shadow). The bound 1%
+  // keeps the edges and fails for a missing or displaced shadow (the wall's alone is 1.5%).
   const Image hard = visibility("contact", "shadow_map", {"light0.radius=0", "shadow.resolution=2048"});
   const Image fine = visibility("contact", "sdf_shadow", {"light0.radius=0", "sdf_shadow.resolution=256"});
   const Image coarse = visibility("contact", "sdf_shadow", {"light0.radius=0"});
   const double f = footprintDifference(hard, fine), c = footprintDifference(hard, coarse);
   std::printf("zero-size light: footprint differs from shadow_map on %.2f%% (256) and %.2f%% (64)\n", 100 * f, 100 * c);
-  EXPECT_LT(f, 0.02);
+  EXPECT_LT(f, 0.01);
   EXPECT_LT(f, c);
   EXPECT_EQ(partialPixels(fine), 0u) << "a zero-size light is a hit test: 0 or 1";
 }
@@ -152,7 +152,7 @@ TEST(SdfShadow, ZeroSizeLightMatchesTheHardShadowMapsFootprint) {
 TEST(SdfShadow, LargestKScaleConvergesToTheHardShadow) {
   // k = 1000 / sin(theta_L) makes k*h/t < 1 only within h < t / k of an occluder: the penumbra
   // shrinks to the hard shadow's edge. Measured at 160x90 on contact with light0.radius 0.3:
-  // footprint difference 0.05%, partial pixels 2 (vs 0.7% and 262 at k_scale 1).
+  // footprint difference 0.000%, no partial pixel (k_scale 1: 0.25% and 92 partial pixels).
   const Image hard = visibility("contact", "sdf_shadow", {"light0.radius=0"});
   const Image sharp = visibility("contact", "sdf_shadow", {"light0.radius=0.3", "sdf_shadow.k_scale=1000"});
   const Image soft = visibility("contact", "sdf_shadow", {"light0.radius=0.3"});
@@ -180,12 +180,17 @@ Accuracy againstReference(const std::string& scene, const std::vector<std::strin
 
 TEST(SdfShadow, PenumbraAgainstTheReference) {
   // RMSE against the 256-spp visibility reference at 160x90, SDF resolution 256 (the thin parts
-  // resolved). Measured: contact 0.0XX (shadow_map 0.0XX), stacked 0.0XX (shadow_map 0.0XX).
-  for (const char* scene : {"contact", "stacked"}) {
-    const Accuracy a = againstReference(scene, {"sdf_shadow.resolution=256"});
-    std::printf("%s: sdf_shadow rmse %.4f, shadow_map %.4f\n", scene, a.rmse, a.hardRmse);
-    EXPECT_LT(a.rmse, 0.05) << scene;
-  }
+  // resolved). Measured: contact 0.0426 (shadow_map at 2048^2: 0.0294), stacked 0.0221 (0.0252).
+  // Contact's error is the estimator's bias: its penumbra lies wholly outside the hard shadow
+  // (the umbra never shrinks, README "Artifacts"), so every shadow edge is dark by about half a
+  // penumbra. The bounds keep a 15-35% margin; a missing shadow gives about 0.17 (3% of the
+  // pixels in shadow), resolution 64, where the wall leaks, 0.126 on contact at 320x180.
+  const Accuracy contact = againstReference("contact", {"sdf_shadow.resolution=256"});
+  const Accuracy stacked = againstReference("stacked", {"sdf_shadow.resolution=256"});
+  std::printf("sdf_shadow rmse: contact %.4f (shadow_map %.4f), stacked %.4f (shadow_map %.4f)\n", contact.rmse,
+              contact.hardRmse, stacked.rmse, stacked.hardRmse);
+  EXPECT_LT(contact.rmse, 0.05);
+  EXPECT_LT(stacked.rmse, 0.03);
 }
 
 TEST(SdfShadow, ThinWallLeaksAtACoarseResolutionOnly) {
