@@ -33,7 +33,7 @@ reference_of visibility
 echo "scene,technique,setting,ms,bytes,rmse,max_abs,build_ms,exhausted_rays"
 for r in $resolutions; do
   for s in $steps; do
-    row=$(measure_row visibility sdf_shadow "$r/$s" --set sdf_shadow.resolution=$r --set sdf_shadow.steps=$s)
+    row=$(measure_row visibility sdf_shadow "$r/$s" --set sdf_shadow.resolution=$r --set sdf_shadow.max_steps=$s)
     echo "$row,$(counter "$tmp/run.json" sdf_build_ms sdf_shadow),$(counter "$tmp/run.json" exhausted_rays sdf_shadow)"
   done
 done

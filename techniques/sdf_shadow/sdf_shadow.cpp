@@ -54,7 +54,7 @@ public:
         ParamSpec::choice("sdf_shadow.estimator", "Estimator", {"classic", "improved"}, 1)
             .withHelp("classic: min k*h/t (Quilez 2010); improved: the closest point between this step's and "
                       "the previous step's spheres (Quilez 2018), fewer artifacts at sharp occluder edges"),
-        ParamSpec::integer("sdf_shadow.steps", "Max steps", 64, 16, 256)
+        ParamSpec::integer("sdf_shadow.max_steps", "Max steps", 64, 16, 256)
             .logScale()
             .withUnit("steps")
             .withHelp("Step budget per pixel; a ray that runs out returns its running minimum (counted)"),
@@ -83,7 +83,7 @@ public:
         {"sdf_shadow.slice", 3,
          "one horizontal slice of the SDF (x right, z down): grey outside (bands every 4 voxels), red inside, "
          "black at the surface"},
-        {"sdf_shadow.steps", 1, "steps taken per pixel / sdf_shadow.steps (1: ran out of steps)"},
+        {"sdf_shadow.steps", 1, "steps taken per pixel / sdf_shadow.max_steps (1: ran out of steps)"},
     };
     info.showcaseScene = "contact";
     return info;
@@ -156,7 +156,7 @@ private:
         .set("uLightRadius", directional ? 0.0f : light.radius)
         .set("uKScale", params.getFloat("sdf_shadow.k_scale"))
         .set("uImproved", params.getEnumName("sdf_shadow.estimator") == "improved")
-        .set("uSteps", params.getInt("sdf_shadow.steps"))
+        .set("uSteps", params.getInt("sdf_shadow.max_steps"))
         .set("uMinStep", minStep)
         .set("uMaxStep", std::max(params.getFloat("sdf_shadow.max_step"), minStep))
         .set("uTmin", params.getFloat("sdf_shadow.tmin"))

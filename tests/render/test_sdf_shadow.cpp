@@ -233,13 +233,13 @@ TEST(SdfShadow, ExhaustedStepsKeepTheRunningMinimumAndAreCounted) {
   // 16 steps of at most 0.005: every march runs out long before leaving the volume. The result is
   // the minimum over the steps taken, so it can only fall as the budget grows (same steps, longer),
   // and it is below 1 near contacts (a march that returned 1 on running out would not be).
-  TestFrame f16 = makeTestFrame("contact", "sdf_shadow", {"sdf_shadow.steps=16", "sdf_shadow.max_step=0.005",
+  TestFrame f16 = makeTestFrame("contact", "sdf_shadow", {"sdf_shadow.max_steps=16", "sdf_shadow.max_step=0.005",
                                                            "sdf_shadow.min_step=0.005"}, kW, kH);
   TestRender r = renderTestFrame(f16, {"visibility"});
   const Image short16 = r.renderer->readAov("visibility");
   const double exhausted = techniqueCounter(*r.renderer, "sdf_shadow", "exhausted_rays");
   TestFrame f64 = f16;
-  f64.params.setAssignment("sdf_shadow.steps=64");
+  f64.params.setAssignment("sdf_shadow.max_steps=64");
   const Image long64 = visibility(f64);
   std::size_t surface = 0, dimmed = 0, rises = 0;
   for (std::size_t i = 0; i < short16.pixels.size(); ++i) {
@@ -261,7 +261,7 @@ TEST(SdfShadow, ImprovedEstimatorWithTinyStepsHasNoSpeckles) {
   // Steps of 0.005 make the previous distance tiny next to the step (y > h in Quilez 2018's
   // formula): without the guards that is a NaN or a black pixel where the classic estimator is lit.
   const std::vector<std::string> tiny = {"sdf_shadow.min_step=0.005", "sdf_shadow.max_step=0.005",
-                                         "sdf_shadow.steps=256", "light0.radius=0.3"};
+                                         "sdf_shadow.max_steps=256", "light0.radius=0.3"};
   std::vector<std::string> classicSets = tiny;
   classicSets.push_back("sdf_shadow.estimator=classic");
   const Image improved = visibility("contact", "sdf_shadow", tiny);
