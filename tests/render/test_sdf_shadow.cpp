@@ -230,27 +230,32 @@ TEST(SdfShadow, ThinWallLeaksAtACoarseResolutionOnly) {
 }
 
 TEST(SdfShadow, ExhaustedStepsKeepTheRunningMinimumAndAreCounted) {
-  // 16 steps of at most 0.005: every march runs out long before leaving the volume. The result is
-  // the minimum over the steps taken, so it can only fall as the budget grows (same steps, longer),
-  // and it is below 1 near contacts (a march that returned 1 on running out would not be).
-  TestFrame f16 = makeTestFrame("contact", "sdf_shadow", {"sdf_shadow.max_steps=16", "sdf_shadow.max_step=0.005",
-                                                           "sdf_shadow.min_step=0.005"}, kW, kH);
-  TestRender r = renderTestFrame(f16, {"visibility"});
+  // 16 steps of at most 0.05 under a wide light: most marches run out within 0.8 of their start.
+  // The result is the minimum over the steps taken, so it can only fall as the budget grows (the
+  // same steps, then more), and near occluders it is below 1 (a march that returned 1 on running
+  // out would not be).
+  TestFrame f16 = makeTestFrame("contact", "sdf_shadow", {"sdf_shadow.max_steps=16", "sdf_shadow.max_step=0.05",
+                                                           "light0.radius=0.3"}, kW, kH);
+  TestRender r = renderTestFrame(f16, {"visibility", "sdf_shadow.steps"});
   const Image short16 = r.renderer->readAov("visibility");
+  const Image steps = r.renderer->readAov("sdf_shadow.steps"); // 1: the march used every step
   const double exhausted = techniqueCounter(*r.renderer, "sdf_shadow", "exhausted_rays");
   TestFrame f64 = f16;
   f64.params.setAssignment("sdf_shadow.max_steps=64");
   const Image long64 = visibility(f64);
-  std::size_t surface = 0, dimmed = 0, rises = 0;
+  std::size_t surface = 0, ranOut = 0, dimmed = 0, rises = 0;
   for (std::size_t i = 0; i < short16.pixels.size(); ++i) {
     if (short16.mask[i] < 0.5f) continue;
     ++surface;
-    dimmed += short16.pixels[i] < 0.9f ? 1 : 0;
     rises += long64.pixels[i] > short16.pixels[i] + 1e-3f ? 1 : 0;
+    if (steps.at(int(i % std::size_t(kW)), int(i / std::size_t(kW)), 0) < 1.0f) continue;
+    ++ranOut;
+    dimmed += short16.pixels[i] < 0.9f ? 1 : 0;
   }
-  std::printf("exhausted %.0f of %zu surface pixels, %zu below 0.9\n", exhausted, surface, dimmed);
-  EXPECT_GT(exhausted, 0.9 * double(surface));
-  EXPECT_GT(dimmed, 0u);
+  std::printf("exhausted %.0f (counter), %zu (steps view), %zu of them below 0.9\n", exhausted, ranOut, dimmed);
+  EXPECT_NEAR(exhausted, double(ranOut), 0.01 * double(ranOut)) << "the counter counts the marches that ran out";
+  EXPECT_GT(ranOut, surface / 2) << "most surface pixels run out";
+  EXPECT_GT(dimmed, 0u) << "a march that ran out returns its running minimum, not 1";
   EXPECT_EQ(rises, 0u);
   // The default budget on contact exhausts no ray.
   TestRender d = renderTestFrame(makeTestFrame("contact", "sdf_shadow", {}, kW, kH), {"visibility"});
