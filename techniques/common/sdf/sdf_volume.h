@@ -1,8 +1,9 @@
 // A signed distance volume of the scene's opaque triangles (techniques/sdf_shadow/README.md "The
-// SDF"): built on the CPU with Embree closest-point queries (rtcPointQuery) over a BVH of the
-// world-space triangles, one query per voxel centre in parallel (TBB), and signed with the
-// angle-weighted pseudo-normal of the closest feature (Baerentzen & Aanaes 2005): exact for closed
-// meshes; for open ones (a ground quad) the side the face normals point to is positive.
+// SDF"): built on the CPU with Embree closest-point queries (rtcPointQuery) over one BVH per
+// instance of its world-space triangles, one query per voxel centre in parallel (TBB), each
+// instance's distance signed with the angle-weighted pseudo-normal of its closest feature
+// (Baerentzen & Aanaes 2005): exact for closed meshes; for open ones (a ground quad) the side the
+// face normals point to is positive. The scene's value is the minimum over the instances.
 // Transparent instances are left out, as the shadow maps leave them out. GL-free, so the distance
 // at any point can be tested against closed forms.
 #pragma once
