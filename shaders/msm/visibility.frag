@@ -1,9 +1,11 @@
 #version 450 core
 // Moment shadow mapping (Peters & Klein 2015, Hamburger 4MSM) with soft shadows: four moments of
 // normalized linear light depth averaged over a box from a summed-area table. The box comes from
-// a PCSS-style blocker estimate (the two-moment estimate of Yang et al. 2010 on the first two
-// moments, then similar triangles), so shadows harden at contacts; visibility is 1 minus the
-// 4MSM shadow intensity over that box. OUTPUT: 0 visibility, 1 blocker depth, 2 filter radius.
+// a PCSS-style blocker estimate (by default the two-moment estimate of Yang et al. 2010 on the
+// first two moments; with FOUR_MOMENT_SEARCH the four-moment one of Peters et al. 2016), then
+// similar triangles, so shadows harden at contacts; visibility is 1 minus the 4MSM shadow
+// intensity over that box, with the light-bleeding reduction of Lauritzen 2007 (as VSSM's).
+// OUTPUT: 0 visibility, 1 blocker depth, 2 filter radius.
 #include "../shadow/common/shadow_space.glsl"
 #include "../shadow/common/moments.glsl"
 
@@ -11,6 +13,7 @@ in vec2 vUv;
 uniform sampler2D uPosition;
 uniform sampler2D uGeometry;
 uniform float uMomentBias;
+uniform float uBleedReduction;
 uniform bool uCentred;
 uniform float uMinPenumbra;
 uniform float uMaxPenumbra;
@@ -52,11 +55,17 @@ void main() {
   } else if (inside && mask > 0.0) {
     float search = clamp(shadowSearchTexels(zR), 1.0, uMaxSearch);
     float zOcc;
-    if (momentBlockerDepth(filteredMoments(coord.xy, search).xy, t, 1e-7, zOcc)) {
+#ifdef FOUR_MOMENT_SEARCH
+    bool blocked = momentBlockerDepth4(filteredMoments(coord.xy, search), t, uMomentBias, zOcc);
+#else
+    bool blocked = momentBlockerDepth(filteredMoments(coord.xy, search).xy, t, 1e-7, zOcc);
+#endif
+    if (blocked) {
       radius = clamp(shadowPenumbraTexels(zR, uLightNear + zOcc * (uLightFar - uLightNear)), uMinPenumbra, uMaxPenumbra);
       // uCentred: the bound from the moments about t (moments.glsl, momentsAbout).
-      visibility = 1.0 - (uCentred ? hamburger4Msm(momentsAbout(filteredMomentsExact(coord.xy, radius), t, uMomentBias), 0.0, 0.0)
-                                   : hamburger4Msm(filteredMoments(coord.xy, radius), t, uMomentBias));
+      float shadow = uCentred ? hamburger4Msm(momentsAbout(filteredMomentsExact(coord.xy, radius), t, uMomentBias), 0.0, 0.0)
+                              : hamburger4Msm(filteredMoments(coord.xy, radius), t, uMomentBias);
+      visibility = reduceBleeding(1.0 - shadow, uBleedReduction);
       blockerShown = zOcc;
     }
   }

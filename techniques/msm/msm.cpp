@@ -28,6 +28,11 @@ public:
             .withHelp("Moments are pulled towards those of a uniform depth distribution by this much (alpha), keeping the Hankel matrix invertible"),
         ParamSpec::boolean("msm.sat_offset", "Offset before summing", true)
             .withHelp("Subtract 0.5 from the moments before building the fixed-point summed-area table (halves its sums: one more bit)"),
+        ParamSpec::real("msm.bleed_reduction", "Light-bleeding reduction", 0.1, 0.0, 0.95)
+            .withHelp("Visibility below this is cut to 0 and the rest rescaled, as vssm.bleed_reduction (less bleeding, harder edges; 0: the raw 4MSM bound)"),
+        ParamSpec::choice("msm.blocker_search", "Blocker search", {"two_moment", "four_moment"}, 0)
+            .withFlags(kParamRecompile)
+            .withHelp("Mean blocker depth from the first two moments (Yang et al. 2010, as VSSM) or from all four (Peters et al. 2016)"),
     };
     info.params.push_back(momentSatBitsParam("msm"));
     info.params.push_back(ParamSpec::boolean("msm.centred", "Moments about the receiver", false)
@@ -57,9 +62,11 @@ public:
     pass.depthMap = false;
     pass.reads = {momentSatResource("msm")};
     pass.defines.push_back("OPTIMIZED");
+    if (frame.params().getEnumName("msm.blocker_search") == "four_moment") pass.defines.push_back("FOUR_MOMENT_SEARCH");
     pass.bind = [config](PassContext& ctx, gl::Program& p) {
       bindMomentSat(ctx, p, config, 3);
-      p.set("uMomentBias", ctx.params.getFloat("msm.moment_bias"));
+      p.set("uMomentBias", ctx.params.getFloat("msm.moment_bias"))
+          .set("uBleedReduction", ctx.params.getFloat("msm.bleed_reduction"));
       setSoftShadowUniforms(ctx, p, "msm");
     };
     addSoftShadowPasses(frame, "msm", pass);

@@ -191,3 +191,57 @@ float hamburger4Msm(vec4 moments, float t, float momentBias) {
   // return 0.0; // no shadow: every receiver is lit
   // exercise: end
 }
+
+// Mean blocker depth over a box from its four moments (Peters, Münstermann, Wetzstein & Klein
+// 2016, moment soft shadow mapping; techniques/msm/README.md, "Four-moment blocker search"). The
+// three-point distribution on {t, z2, z3} that matches the biased moments (as in hamburger4Msm)
+// splits the box into the part at or behind t (lit) and the blockers strictly in front of t: their
+// mass G and first moment M give zOcc = M / G. Both roots in front: G = 1 - w_t and M = b1 - w_t t
+// (Yang et al.'s split with the four-moment weight w_t in place of Chebyshev's p); only z2 in
+// front: G = w2 and zOcc = z2; none in front: no blocker. False (lit) when G < 0.01, as
+// momentBlockerDepth's p >= 0.99. Every division is guarded (README, "Numerical guards").
+bool momentBlockerDepth4(vec4 moments, float t, float momentBias, out float zOcc) {
+  zOcc = t;
+  // The bias towards b_ref of hamburger4Msm (spelled out: the exercise's mutations find that line).
+  vec4 b = mix(moments, vec4(0.5, 0.5, 0.5, 0.5), momentBias);
+  // The solve repeats hamburger4Msm's on purpose: that function is the msm exercise's region, which
+  // students rewrite and stub, and the search must not depend on their version of it.
+  // Cholesky factorization of the Hankel matrix, with floors on both pivots: in exact arithmetic
+  // the bias keeps them positive (d22 >= momentBias / 4), in 32-bit floats they can round to 0 or
+  // below at the smallest bias.
+  float d22 = max(b.y - b.x * b.x, 1e-12);
+  float l32d22 = b.z - b.x * b.y;
+  float l32 = l32d22 / d22;
+  float d33 = max((b.w - b.y * b.y) - l32 * l32d22, 1e-12);
+  vec3 c = vec3(1.0, t, t * t);
+  c.y -= b.x;
+  c.z -= b.y + l32 * c.y;
+  c.y /= d22;
+  c.z /= d33;
+  c.y -= l32 * c.z;
+  c.x -= dot(c.yz, b.xy);
+  // c3 -> 0 (the quadratic degenerates): keep its sign, bound its size, so p and q stay finite.
+  float c3 = abs(c.z) < 1e-12 ? (c.z < 0.0 ? -1e-12 : 1e-12) : c.z;
+  float p = c.y / c3;
+  float q = c.x / c3;
+  float r = sqrt(max(p * p * 0.25 - q, 0.0));
+  float z2 = -0.5 * p - r;
+  float z3 = -0.5 * p + r;
+  float blockers;
+  if (z3 < t) {
+    // Both roots in front: all but the weight at t blocks. (t - z2)(t - z3) > 0, floored.
+    float wt = clamp((z2 * z3 - b.x * (z2 + z3) + b.y) / max((t - z2) * (t - z3), 1e-20), 0.0, 1.0);
+    blockers = 1.0 - wt;
+    if (blockers < 0.01) return false;
+    zOcc = clamp((b.x - wt * t) / blockers, 0.0, t);
+    return true;
+  }
+  if (z2 < t) {
+    // Only z2 in front: its weight is the blockers' mass, z2 their depth. (z2 - t)(z2 - z3) > 0.
+    blockers = clamp((t * z3 - b.x * (t + z3) + b.y) / max((z2 - t) * (z2 - z3), 1e-20), 0.0, 1.0);
+    if (blockers < 0.01) return false;
+    zOcc = clamp(z2, 0.0, t);
+    return true;
+  }
+  return false;
+}

@@ -22,6 +22,7 @@ void addShadowScreenPass(FrameGraph& frame, const ShadowScreenPass& pass) {
       [&](PassBuilder& b) {
         if (pass.depthMap) b.read(kShadowDepth);
         for (const auto& r : pass.reads) b.read(r);
+        if (pass.declare) pass.declare(b);
         b.read(res::kShadowPosition);
         b.read(res::kShadowNormal);
         b.write(pass.output, frameTexture(frame, pass.format));

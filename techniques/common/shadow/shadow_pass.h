@@ -17,6 +17,7 @@
 namespace rtlab {
 
 class FrameGraph;
+class PassBuilder;
 struct PassContext;
 
 // A full-screen pass of a shadow technique over the G-buffer: fullscreen.vert + `fragment` with
@@ -34,6 +35,7 @@ struct ShadowScreenPass {
   std::vector<std::string> defines;
   bool depthMap = true;      // reads the shadow stage's "shadow.depth"
   std::vector<std::string> reads; // further frame resources (e.g. a moment table)
+  std::function<void(PassBuilder&)> declare; // further declarations (e.g. a counter buffer)
   std::function<void(PassContext&, gl::Program&)> bind;
 };
 void addShadowScreenPass(FrameGraph& frame, const ShadowScreenPass& pass);
