@@ -156,12 +156,15 @@ inline TexelBox texelBox(float u, float v, float radius, int size) {
 }
 
 // The box mean from its exact sum: vec4(ivec4(sum)) / (area * uSatScale) + uSatOffset; a 64-bit
-// table's in double, rounded to T at the end (boxMoments with uSatWide).
+// table's sum as T(int(high)) * 2^32 + T(low) (boxMoments with uSatWide).
 template <class T> Vec4<T> boxMean(const Vec4<int64_t>& sum, int area, double scale, double offset, bool wide) {
   Vec4<T> m{};
   const T denominator = T(area) * T(scale);
-  for (int c = 0; c < 4; ++c)
-    m[c] = wide ? T(double(sum[c]) / (double(area) * scale) + offset) : T(T(sum[c]) / denominator + T(offset));
+  for (int c = 0; c < 4; ++c) {
+    const uint64_t bits = uint64_t(sum[c]);
+    const T total = wide ? T(int32_t(uint32_t(bits >> 32))) * T(4294967296.0) + T(uint32_t(bits)) : T(sum[c]);
+    m[c] = total / denominator + T(offset);
+  }
   return m;
 }
 

@@ -37,12 +37,16 @@ SatBox satBox(vec2 uv, float radius) {
 ivec4 narrowSum(SatBox b) { return ivec4(satAt(b.hi) - satAt(b.c10) - satAt(b.c01) + satAt(b.c00)); }
 
 // The box's sum from a 64-bit table: the same on (low, high) word pairs, with borrows and carries.
-dvec4 wideSum(SatBox b) {
+void wideWords(SatBox b, out uvec4 low, out uvec4 high) {
   uvec4 borrow1, borrow2, carry;
-  uvec4 low = usubBorrow(satAt(b.hi), satAt(b.c10), borrow1);
+  low = usubBorrow(satAt(b.hi), satAt(b.c10), borrow1);
   low = usubBorrow(low, satAt(b.c01), borrow2);
   low = uaddCarry(low, satAt(b.c00), carry);
-  uvec4 high = satHighAt(b.hi) - satHighAt(b.c10) - satHighAt(b.c01) + satHighAt(b.c00) - borrow1 - borrow2 + carry;
+  high = satHighAt(b.hi) - satHighAt(b.c10) - satHighAt(b.c01) + satHighAt(b.c00) - borrow1 - borrow2 + carry;
+}
+dvec4 wideSum(SatBox b) {
+  uvec4 low, high;
+  wideWords(b, low, high);
   return dvec4(ivec4(high)) * 4294967296.0LF + dvec4(low);
 }
 
@@ -51,7 +55,13 @@ dvec4 wideSum(SatBox b) {
 // moments is the 32-bit table's step 1/uSatScale (techniques/vssm/README.md, "Precision").
 vec4 boxMoments(vec2 uv, float radius) {
   SatBox b = satBox(uv, radius);
-  if (uSatWide) return vec4(wideSum(b) / (double(b.area) * double(uSatScale)) + dvec4(uSatOffset));
+  if (uSatWide) {
+    // In float: the high word's float(int) * 2^32 plus float(low) rounds by at most a few hundred
+    // units of 1/uSatScale (<= 2^-45), far below the moments' own float rounding.
+    uvec4 low, high;
+    wideWords(b, low, high);
+    return (vec4(ivec4(high)) * 4294967296.0 + vec4(low)) / (b.area * uSatScale) + uSatOffset;
+  }
   return vec4(narrowSum(b)) / (b.area * uSatScale) + uSatOffset;
 }
 
