@@ -84,6 +84,7 @@ render_set() {
 }
 
 renderer_of() { "$py" -c 'import json,sys; print(json.load(open(sys.argv[1]))["renderer"])' "$1"; }
+size_of() { "$py" -c 'import json,sys; print("%dx%d" % tuple(json.load(open(sys.argv[1]))["size"]))' "$1"; }
 
 list_jobs > "$work/jobs.tsv"
 [[ -s $work/jobs.tsv ]] || usage "no technique to check"
@@ -104,7 +105,7 @@ fi
 first=$(head -1 "$work/jobs.tsv" | cut -f1)
 gpu_renderer=$(renderer_of "$gpu/$first.json")
 ref_renderer=$(renderer_of "$ref/$first.json")
-echo "gpu-check: A = $gpu_renderer, B = $ref_renderer, $size"
+echo "gpu-check: A = $gpu_renderer, B = $ref_renderer, $(size_of "$gpu/$first.json")"
 if [[ $self_test == 0 && $gpu_renderer == *llvmpipe* ]]; then
   echo "gpu-check: side A rendered on llvmpipe, not a GPU (EGL found Mesa: see docs/performance.md, \"GPU check (scripts/gpu-check.sh)\"; --self-test to accept)" >&2
   exit 1
@@ -128,8 +129,11 @@ for line in open(jobs):
     if tol is None:
         rows.append((tid, aov, scene, "-", "-", "-", "FAIL: no tolerance in " + tolerance_file)); failed += 1; continue
     rmse_max, pixel, fraction_max = tol
-    m = json.loads(subprocess.run([rtlab, "compare", "%s/%s.exr" % (gpu, tid), "%s/%s.exr" % (ref, tid), "--json",
-                                   "--over", repr(pixel)], check=True, capture_output=True, text=True).stdout)
+    run = subprocess.run([rtlab, "compare", "%s/%s.exr" % (gpu, tid), "%s/%s.exr" % (ref, tid), "--json",
+                          "--over", repr(pixel)], capture_output=True, text=True)
+    if run.returncode != 0:  # a missing image, or two sizes
+        rows.append((tid, aov, scene, "-", "-", "-", "FAIL: " + run.stderr.strip())); failed += 1; continue
+    m = json.loads(run.stdout)
     rmse, mx, frac = m["rmse"], m["max_abs"], m["over"]["fraction"]
     ok = rmse is not None and rmse <= rmse_max and frac <= fraction_max and m["nan_count"] == 0
     failed += not ok
