@@ -211,6 +211,24 @@ TEST(ViewActions, TheArealightLecturesCompareBookmarkMeasuresLtcAgainstTheRefere
 // The indirect lecture (assets/lecture/indirect.json) in the viewer: every bookmark (rsm and lpv on
 // cornell and gi_wall, their debug views, a moved light 0) applies without a GL error, and its
 // compare bookmark (12) measures lpv's `indirect` against the progressive one-bounce reference.
+// The shadow lecture (assets/lecture/shadow-family.json) in the viewer: every bookmark applies
+// without a GL error, and the first sdf_shadow bookmark (9) measures the march's visibility against
+// the ray-traced reference.
+TEST(ViewActions, TheShadowLecturesSdfBookmarkMeasuresTheMarchAgainstTheReference) {
+  const auto report = lectureCompareReport("shadow-family.json", 8);
+  EXPECT_EQ(report["scene"], "contact");
+  ASSERT_TRUE(report["techniques"].is_array()) << report.dump(1);
+  EXPECT_EQ(report["techniques"], nlohmann::json::array({"sdf_shadow"}));
+  EXPECT_EQ(report["compare"]["mode"], "reference");
+  EXPECT_EQ(report["reference"]["aov"], "visibility");
+  ASSERT_TRUE(report["reference"]["rmse"].is_number()) << report.dump(1);
+  // A visibility error is at most 1 per pixel; the march at 128 voxels measured 0.07 against a
+  // 256-spp reference at 640x360 (techniques/sdf_shadow/README.md): far below 0.5, above 0.
+  EXPECT_GT(report["reference"]["rmse"].get<double>(), 0.0);
+  EXPECT_LT(report["reference"]["rmse"].get<double>(), 0.5);
+  EXPECT_EQ(report["gl_errors"], 0);
+}
+
 TEST(ViewActions, TheIndirectLecturesCompareBookmarkMeasuresLpvAgainstTheReference) {
   const auto report = lectureCompareReport("indirect.json", 12);
   EXPECT_EQ(report["scene"], "cornell");
