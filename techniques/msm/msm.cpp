@@ -35,7 +35,7 @@ public:
             .withHelp("Mean blocker depth from the first two moments (Yang et al. 2010, as VSSM) or from all four (Peters et al. 2016)"),
     };
     info.params.push_back(momentSatBitsParam("msm"));
-    info.params.push_back(ParamSpec::boolean("msm.centred", "Moments about the receiver", false)
+    info.params.push_back(ParamSpec::boolean("msm.centred", "Moments about the receiver", true)
         .withHelp("Shift the box's moments to the receiver's depth in double before the 4MSM bound (the same bound; float "
                   "no longer cancels on boxes of one depth: README, \"Precision\")"));
     for (auto& spec : softShadowParams("msm", 64.0, 256.0, 256.0)) info.params.push_back(spec);
