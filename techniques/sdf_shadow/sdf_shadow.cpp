@@ -1,11 +1,13 @@
 // sdf_shadow — soft shadows by sphere tracing a signed distance field towards light 0 (Hart 1996,
 // "Sphere tracing"; the penumbra estimators of Quilez 2010 and 2018). The SDF is the scene's opaque
-// triangles baked into a 3D texture on the CPU (techniques/common/sdf/), rebuilt only when the
-// geometry changes. Per pixel, from the G-buffer's shading point lifted by tmin along its normal,
-// the march keeps the running minimum of k*h/t (classic) or of the improved estimate through the
-// previous step's sphere (improved), with k = k_scale / sin(theta_L) from the light's own size
-// (light0.angle, or asin(light0.radius / distance)). techniques/sdf_shadow/README.md has the
-// guards, the artifacts and the measured cost and error.
+// triangles baked on the CPU (techniques/common/sdf/) into one volume per opaque instance (or one
+// over the scene: sdf_shadow.volumes) packed in a 3D texture, rebuilt only when the geometry
+// changes; the march takes the minimum over the volumes. Per pixel, from the G-buffer's shading
+// point lifted by tmin along its normal, the march keeps the running minimum of k*h/t (classic) or
+// of the improved estimate through the previous step's sphere (improved), with
+// k = k_scale / sin(theta_L) from the light's own size (light0.angle, or asin(light0.radius /
+// distance)). techniques/sdf_shadow/README.md has the guards, the artifacts and the measured cost
+// and error.
 #include "frame/frame_graph.h"
 #include "frame/registry.h"
 #include "gl/buffer.h"
@@ -37,7 +39,7 @@ public:
     info.summary = "Sphere tracing a baked signed distance field towards light 0; the penumbra from the closest "
                    "miss angle, k = 1/sin of the light's angular radius";
     info.params = {
-        ParamSpec::choice("sdf_shadow.volumes", "SDF volumes", {"scene", "per_instance"}, 0)
+        ParamSpec::choice("sdf_shadow.volumes", "SDF volumes", {"scene", "per_instance"}, 1)
             .withFlags(kParamRealloc)
             .withHelp("scene: one volume over the padded bounds of all opaque geometry; per_instance: one per "
                       "opaque instance over its own bounds (small objects get fine voxels; the march takes the "
@@ -83,7 +85,8 @@ public:
             .withHelp("A step whose distance is below epsilon * max(1, t) is a hit (visibility 0); never below "
                       "the float spacing of the position"),
         ParamSpec::real("sdf_shadow.slice_height", "Slice height", 0.1, 0.0, 1.0)
-            .withHelp("Debug view sdf_shadow.slice: the horizontal layer at this fraction of the volume's height"),
+            .withHelp("Debug view sdf_shadow.slice: the horizontal layer at this fraction of the height of the "
+                      "box around the volumes"),
     };
     info.debugViews = {
         {"sdf_shadow.slice", 3,

@@ -39,7 +39,8 @@ void SdfTexture::update(const Scene& scene, Layout layout, int resolution, int p
     const sdf::TriangleDistance field(scene);
     if (field.partCount() >= 1 && field.partCount() <= std::size_t(kMaxVolumes)) {
       std::vector<glm::ivec3> dims;
-      for (std::size_t i = 0; i < field.partCount(); ++i) dims.push_back(sdf::fitGrid(field.partBounds(i), resolution, padding).dims);
+      for (std::size_t i = 0; i < field.partCount(); ++i)
+        dims.push_back(sdf::fitGrid(field.partBounds(i), resolution, padding).dims);
       GLint maxSize = 0;
       glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
       if (packVolumes(dims, maxSize, offsets, size)) volumes = sdf::buildInstanceVolumes(field, resolution, padding);
@@ -59,7 +60,8 @@ void SdfTexture::update(const Scene& scene, Layout layout, int resolution, int p
   ++m_builds;
 }
 
-void SdfTexture::upload(const std::vector<sdf::Volume>& volumes, const std::vector<glm::ivec3>& offsets, glm::ivec3 size) {
+void SdfTexture::upload(const std::vector<sdf::Volume>& volumes, const std::vector<glm::ivec3>& offsets,
+                        glm::ivec3 size) {
   gl::TextureDesc d;
   d.target = GL_TEXTURE_3D;
   // 16-bit floats: 11 significant bits keep distances near surfaces (where the march decides)
@@ -77,8 +79,8 @@ void SdfTexture::upload(const std::vector<sdf::Volume>& volumes, const std::vect
   for (std::size_t i = 0; i < volumes.size(); ++i) {
     const sdf::Volume& v = volumes[i];
     const glm::ivec3 o = offsets[i];
-    glTextureSubImage3D(m_texture.id(), 0, o.x, o.y, o.z, v.grid.dims.x, v.grid.dims.y, v.grid.dims.z, GL_RED,
-                        GL_FLOAT, v.distance.data());
+    glTextureSubImage3D(m_texture.id(), 0, o.x, o.y, o.z, v.grid.dims.x, v.grid.dims.y, v.grid.dims.z, GL_RED, GL_FLOAT,
+                        v.distance.data());
     m_grids.push_back(v.grid);
     m_buildMs += v.buildMs;
   }
@@ -87,7 +89,8 @@ void SdfTexture::upload(const std::vector<sdf::Volume>& volumes, const std::vect
 
 std::size_t SdfTexture::voxels() const {
   std::size_t n = 0;
-  for (const sdf::Grid& g : m_grids) n += g.count();
+  for (const sdf::Grid& g : m_grids)
+    n += g.count();
   return n;
 }
 

@@ -40,10 +40,10 @@ public:
   void bind(gl::Program& program, int unit) const;
 
   int volumes() const { return int(m_grids.size()); } // 1 for Scene and for the fallback
-  int builds() const { return m_builds; }              // builds done by this object
-  int cacheHits() const { return m_cacheHits; }        // geometry changes that hashed the same
-  double lastBuildMs() const { return m_buildMs; }     // CPU distance queries of the last build
-  std::size_t voxels() const;                          // over the volumes (not the atlas' slack)
+  int builds() const { return m_builds; }             // builds done by this object
+  int cacheHits() const { return m_cacheHits; }       // geometry changes that hashed the same
+  double lastBuildMs() const { return m_buildMs; }    // CPU distance queries of the last build
+  std::size_t voxels() const;                         // over the volumes (not the atlas' slack)
   std::size_t bytes() const { return m_texture ? m_texture.desc().bytes() : 0; }
 
 private:

@@ -264,9 +264,13 @@ float TriangleDistance::partDistance(const Part& part, const glm::vec3& p) const
   return glm::dot(p - closest.point, pseudo) < 0.0f ? -d : d;
 }
 
-const Bounds& TriangleDistance::partBounds(std::size_t i) const { return m_parts.at(i)->bounds; }
+const Bounds& TriangleDistance::partBounds(std::size_t i) const {
+  return m_parts.at(i)->bounds;
+}
 
-float TriangleDistance::partDistance(std::size_t i, const glm::vec3& p) const { return partDistance(*m_parts.at(i), p); }
+float TriangleDistance::partDistance(std::size_t i, const glm::vec3& p) const {
+  return partDistance(*m_parts.at(i), p);
+}
 
 float TriangleDistance::signedDistance(const glm::vec3& p) const {
   float best = std::numeric_limits<float>::infinity();
