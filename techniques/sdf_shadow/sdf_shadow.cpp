@@ -43,8 +43,8 @@ public:
             .withFlags(kParamRealloc)
             .withHelp("scene: one volume over the padded bounds of all opaque geometry; per_instance: one per "
                       "opaque instance over its own bounds (small objects get fine voxels; the march takes the "
-                      "minimum over them). More than 16 opaque instances: one scene volume (counter "
-                      "sdf_volumes). Rebuilds the SDF"),
+                      "minimum over them). More than 16 opaque instances, or more than 256^3 voxels in all: one "
+                      "scene volume (counter sdf_volumes). Rebuilds the SDF"),
         ParamSpec::integer("sdf_shadow.resolution", "SDF resolution", 64, 32, 256)
             .logScale()
             .withUnit("voxels")

@@ -163,6 +163,19 @@ TEST(SdfVolume, AtlasPacksVolumesInColumnsWithinTheLimit) {
   EXPECT_FALSE(packVolumes({{64, 8, 100}, {64, 8, 100}, {64, 8, 100}}, 128, offsets, size)) << "columns past the limit";
 }
 
+TEST(SdfVolume, PerInstanceVolumesAreBoundedInCountAndVoxels) {
+  // At most SdfTexture::kMaxVolumes volumes holding at most kMaxVoxels (256^3, one scene volume's
+  // largest) in all; beyond, one scene volume (SdfTexture::update).
+  const int limit = SdfTexture::kMaxVolumes;
+  EXPECT_TRUE(perInstanceAllowed(std::vector<glm::ivec3>(std::size_t(limit), glm::ivec3(64))));
+  EXPECT_FALSE(perInstanceAllowed(std::vector<glm::ivec3>(std::size_t(limit) + 1, glm::ivec3(8))));
+  EXPECT_FALSE(perInstanceAllowed({})) << "no opaque geometry";
+  EXPECT_TRUE(perInstanceAllowed({{256, 256, 256}}));
+  EXPECT_FALSE(perInstanceAllowed({{256, 256, 256}, {256, 5, 256}})) << "one plane more than 256^3";
+  // contact at resolution 256: the box, the sphere and the floating box alone are about 256^3 each.
+  EXPECT_FALSE(perInstanceAllowed({{256, 5, 256}, {256, 194, 256}, {256, 256, 256}, {256, 154, 8}, {256, 256, 256}}));
+}
+
 // ---- rendered ----
 
 Image visibility(const TestFrame& f) {

@@ -23,6 +23,14 @@ bool packVolumes(const std::vector<glm::ivec3>& dims, int maxSize, std::vector<g
   return size.x <= maxSize;
 }
 
+bool perInstanceAllowed(const std::vector<glm::ivec3>& dims) {
+  if (dims.empty() || dims.size() > std::size_t(SdfTexture::kMaxVolumes)) return false;
+  std::size_t voxels = 0;
+  for (const glm::ivec3& d : dims)
+    voxels += std::size_t(d.x) * std::size_t(d.y) * std::size_t(d.z);
+  return voxels <= SdfTexture::kMaxVoxels;
+}
+
 void SdfTexture::update(const Scene& scene, Layout layout, int resolution, int padding) {
   const bool sameSize = m_built && layout == m_layout && resolution == m_resolution && padding == m_padding;
   if (sameSize && !m_checkHash) return;
@@ -37,16 +45,15 @@ void SdfTexture::update(const Scene& scene, Layout layout, int resolution, int p
   glm::ivec3 size(0);
   if (layout == Layout::PerInstance) {
     const sdf::TriangleDistance field(scene);
-    if (field.partCount() >= 1 && field.partCount() <= std::size_t(kMaxVolumes)) {
-      std::vector<glm::ivec3> dims;
-      for (std::size_t i = 0; i < field.partCount(); ++i)
-        dims.push_back(sdf::fitGrid(field.partBounds(i), resolution, padding).dims);
-      GLint maxSize = 0;
-      glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
-      if (packVolumes(dims, maxSize, offsets, size)) volumes = sdf::buildInstanceVolumes(field, resolution, padding);
-    }
+    std::vector<glm::ivec3> dims;
+    for (std::size_t i = 0; i < field.partCount() && i <= std::size_t(kMaxVolumes); ++i)
+      dims.push_back(sdf::fitGrid(field.partBounds(i), resolution, padding).dims);
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
+    if (perInstanceAllowed(dims) && packVolumes(dims, maxSize, offsets, size))
+      volumes = sdf::buildInstanceVolumes(field, resolution, padding);
   }
-  if (volumes.empty()) { // the Scene layout, or the per-instance fallback (too many, no geometry, too large)
+  if (volumes.empty()) { // the Scene layout, or the per-instance fallback (none, too many, too large)
     volumes.push_back(sdf::buildVolume(scene, resolution, padding));
     offsets = {glm::ivec3(0)};
     size = volumes[0].grid.dims;

@@ -6,8 +6,9 @@
 // Two layouts (techniques/sdf_shadow/README.md "The SDF"): Scene, one volume over the padded
 // bounds of all opaque geometry; PerInstance, one volume per opaque instance over its own padded
 // bounds (so a small object gets fine voxels however large the scene), packed side by side into the
-// texture (an atlas). A scene with more opaque instances than kMaxVolumes, or whose volumes do not
-// fit GL_MAX_3D_TEXTURE_SIZE, gets the Scene layout instead (volumes() says 1; documented there).
+// texture (an atlas). A scene with more opaque instances than kMaxVolumes, whose volumes would
+// hold more than kMaxVoxels in all, or whose volumes do not fit GL_MAX_3D_TEXTURE_SIZE, gets the
+// Scene layout instead (volumes() says 1; documented there).
 #pragma once
 #include "gl/program.h"
 #include "gl/texture.h"
@@ -25,6 +26,9 @@ public:
   // The most volumes a shader loops over (the length of its uniform arrays): SDF_MAX_VOLUMES in
   // shaders/sdf/common/sdf_volume.glsl, defined from this constant by the technique.
   static constexpr int kMaxVolumes = 16;
+  // The most voxels the PerInstance volumes hold in all: what one Scene volume holds at most (a
+  // cube at the largest resolution, 256^3), so neither layout builds or stores more than that.
+  static constexpr std::size_t kMaxVoxels = std::size_t(256) * 256 * 256;
 
   explicit SdfTexture(std::string label) : m_label(std::move(label)) {}
 
@@ -61,6 +65,9 @@ private:
   int m_builds = 0, m_cacheHits = 0;
   double m_buildMs = 0.0;
 };
+
+// Whether volumes of `dims` may be PerInstance volumes: 1..kMaxVolumes of them, kMaxVoxels in all.
+bool perInstanceAllowed(const std::vector<glm::ivec3>& dims);
 
 // Places boxes of `dims` side by side in a texture no larger than `maxSize` on any axis: stacked
 // along z into columns, a new column along x when the next one would pass maxSize. Returns each
