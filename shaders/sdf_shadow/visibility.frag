@@ -3,8 +3,8 @@
 // the shading point p lifted by tmin along its normal, march towards light 0 through the scene's
 // distance volume, stepping by the safe distance h (clamped to [min step, max step]), and keep the
 // running minimum of the estimated visible fraction. A step with h below the hit threshold is an
-// occluder (0). The march ends at the light (spot, point) or where it leaves the volume (nothing
-// lies outside). Running out of steps keeps the running minimum (not 1) and is counted.
+// occluder (0). The march ends at the light (spot, point) or where it leaves the volumes' union
+// box (nothing lies outside). Running out of steps keeps the running minimum (not 1) and is counted.
 // OUTPUT selects what is written: 0 visibility, 1 steps / max steps, 2 the SDF slice view.
 #include "../sdf/common/sdf_volume.glsl"
 
@@ -102,7 +102,7 @@ March march(vec3 o, vec3 l, float tEnd, float k) {
 vec3 sliceColour(vec2 uv) {
   vec3 x = uSdfOrigin + uSdfSize * vec3(uv.x, uSliceHeight, 1.0 - uv.y);
   float d = sdfDistance(x);
-  float voxel = uSdfSize.x / float(textureSize(uSdf, 0).x);
+  float voxel = uSdfVoxel;
   float band = 0.6 + 0.4 * step(0.5, fract(abs(d) / (4.0 * voxel)));
   float edge = smoothstep(0.0, 0.5 * voxel, abs(d));
   return (d < 0.0 ? vec3(0.9, 0.15, 0.1) : vec3(band)) * edge;

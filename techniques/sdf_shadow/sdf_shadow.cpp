@@ -1,11 +1,13 @@
 // sdf_shadow — soft shadows by sphere tracing a signed distance field towards light 0 (Hart 1996,
 // "Sphere tracing"; the penumbra estimators of Quilez 2010 and 2018). The SDF is the scene's opaque
-// triangles baked into a 3D texture on the CPU (techniques/common/sdf/), rebuilt only when the
-// geometry changes. Per pixel, from the G-buffer's shading point lifted by tmin along its normal,
-// the march keeps the running minimum of k*h/t (classic) or of the improved estimate through the
-// previous step's sphere (improved), with k = k_scale / sin(theta_L) from the light's own size
-// (light0.angle, or asin(light0.radius / distance)). techniques/sdf_shadow/README.md has the
-// guards, the artifacts and the measured cost and error.
+// triangles baked on the CPU (techniques/common/sdf/) into one volume per opaque instance (or one
+// over the scene: sdf_shadow.volumes) packed in a 3D texture, rebuilt only when the geometry
+// changes; the march takes the minimum over the volumes. Per pixel, from the G-buffer's shading
+// point lifted by tmin along its normal, the march keeps the running minimum of k*h/t (classic) or
+// of the improved estimate through the previous step's sphere (improved), with
+// k = k_scale / sin(theta_L) from the light's own size (light0.angle, or asin(light0.radius /
+// distance)). techniques/sdf_shadow/README.md has the guards, the artifacts and the measured cost
+// and error.
 #include "frame/frame_graph.h"
 #include "frame/registry.h"
 #include "gl/buffer.h"
@@ -37,12 +39,18 @@ public:
     info.summary = "Sphere tracing a baked signed distance field towards light 0; the penumbra from the closest "
                    "miss angle, k = 1/sin of the light's angular radius";
     info.params = {
+        ParamSpec::choice("sdf_shadow.volumes", "SDF volumes", {"scene", "per_instance"}, 1)
+            .withFlags(kParamRealloc)
+            .withHelp("scene: one volume over the padded bounds of all opaque geometry; per_instance: one per "
+                      "opaque instance over its own bounds (small objects get fine voxels; the march takes the "
+                      "minimum over them). More than 16 opaque instances, or more than 256^3 voxels in all: one "
+                      "scene volume (counter sdf_volumes). Rebuilds the SDF"),
         ParamSpec::integer("sdf_shadow.resolution", "SDF resolution", 64, 32, 256)
             .logScale()
             .withUnit("voxels")
             .withFlags(kParamRealloc)
-            .withHelp("Voxels along the longest axis of the padded scene bounds (cubic voxels); walls thinner "
-                      "than about a voxel leak. Rebuilds the SDF"),
+            .withHelp("Voxels along the longest axis of each volume's padded bounds (cubic voxels); walls "
+                      "thinner than about a voxel leak. Rebuilds the SDF"),
         ParamSpec::integer("sdf_shadow.padding", "SDF padding", 2, 1, 8)
             .withUnit("voxels")
             .withFlags(kParamRealloc)
@@ -77,7 +85,8 @@ public:
             .withHelp("A step whose distance is below epsilon * max(1, t) is a hit (visibility 0); never below "
                       "the float spacing of the position"),
         ParamSpec::real("sdf_shadow.slice_height", "Slice height", 0.1, 0.0, 1.0)
-            .withHelp("Debug view sdf_shadow.slice: the horizontal layer at this fraction of the volume's height"),
+            .withHelp("Debug view sdf_shadow.slice: the horizontal layer at this fraction of the height of the "
+                      "box around the volumes"),
     };
     info.debugViews = {
         {"sdf_shadow.slice", 3,
@@ -96,7 +105,9 @@ public:
 
   void setup(FrameGraph& frame) override {
     const ParamSet& params = frame.params();
-    m_sdf.update(frame.scene(), params.getInt("sdf_shadow.resolution"), params.getInt("sdf_shadow.padding"));
+    const auto layout = params.getEnumName("sdf_shadow.volumes") == "per_instance" ? SdfTexture::Layout::PerInstance
+                                                                                  : SdfTexture::Layout::Scene;
+    m_sdf.update(frame.scene(), layout, params.getInt("sdf_shadow.resolution"), params.getInt("sdf_shadow.padding"));
     if (!m_counts) m_counts = gl::BufferObject({gl::BufferKind::Storage, sizeof(GLuint)}, kCounts);
     frame.importTexture(kVolume, m_sdf.texture());
     frame.importBuffer(kCounts, m_counts);
@@ -109,7 +120,7 @@ public:
       pass.output = outputs[i].first;
       pass.format = i == 0 ? GL_R16F : GL_RGBA32F;
       pass.fragment = "sdf_shadow/visibility.frag";
-      pass.defines = {"OUTPUT " + std::to_string(i)};
+      pass.defines = {"OUTPUT " + std::to_string(i), "SDF_MAX_VOLUMES " + std::to_string(SdfTexture::kMaxVolumes)};
       pass.depthMap = false;
       pass.reads = {kVolume};
       if (i == 0)
@@ -137,8 +148,8 @@ public:
     out.push_back({"sdf_builds", double(m_sdf.builds())});
     out.push_back({"sdf_cache_hits", double(m_sdf.cacheHits())});
     out.push_back({"sdf_build_ms", m_sdf.lastBuildMs()});
-    const sdf::Grid& g = m_sdf.grid();
-    out.push_back({"sdf_voxels", double(g.count())});
+    out.push_back({"sdf_voxels", double(m_sdf.voxels())});
+    out.push_back({"sdf_volumes", double(m_sdf.volumes())});
     return out;
   }
 

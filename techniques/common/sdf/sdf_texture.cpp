@@ -1,9 +1,38 @@
 #include "techniques/common/sdf/sdf_texture.h"
 
+#include <algorithm>
+
 namespace rtlab {
 
-void SdfTexture::update(const Scene& scene, int resolution, int padding) {
-  const bool sameSize = m_built && resolution == m_resolution && padding == m_padding;
+bool packVolumes(const std::vector<glm::ivec3>& dims, int maxSize, std::vector<glm::ivec3>& offsets, glm::ivec3& size) {
+  offsets.clear();
+  size = glm::ivec3(0);
+  int columnX = 0, columnWidth = 0, z = 0;
+  for (const glm::ivec3& d : dims) {
+    if (d.x > maxSize || d.y > maxSize || d.z > maxSize) return false;
+    if (z + d.z > maxSize) { // a new column
+      columnX += columnWidth;
+      columnWidth = 0;
+      z = 0;
+    }
+    offsets.emplace_back(columnX, 0, z);
+    columnWidth = std::max(columnWidth, d.x);
+    z += d.z;
+    size = glm::max(size, glm::ivec3(columnX + columnWidth, d.y, z));
+  }
+  return size.x <= maxSize;
+}
+
+bool perInstanceAllowed(const std::vector<glm::ivec3>& dims) {
+  if (dims.empty() || dims.size() > std::size_t(SdfTexture::kMaxVolumes)) return false;
+  std::size_t voxels = 0;
+  for (const glm::ivec3& d : dims)
+    voxels += std::size_t(d.x) * std::size_t(d.y) * std::size_t(d.z);
+  return voxels <= SdfTexture::kMaxVoxels;
+}
+
+void SdfTexture::update(const Scene& scene, Layout layout, int resolution, int padding) {
+  const bool sameSize = m_built && layout == m_layout && resolution == m_resolution && padding == m_padding;
   if (sameSize && !m_checkHash) return;
   const std::uint64_t hash = sdf::geometryHash(scene);
   m_checkHash = false;
@@ -11,35 +40,89 @@ void SdfTexture::update(const Scene& scene, int resolution, int padding) {
     ++m_cacheHits;
     return;
   }
-  const sdf::Volume volume = sdf::buildVolume(scene, resolution, padding);
+  std::vector<sdf::Volume> volumes;
+  std::vector<glm::ivec3> offsets;
+  glm::ivec3 size(0);
+  if (layout == Layout::PerInstance) {
+    const sdf::TriangleDistance field(scene);
+    std::vector<glm::ivec3> dims;
+    for (std::size_t i = 0; i < field.partCount() && i <= std::size_t(kMaxVolumes); ++i)
+      dims.push_back(sdf::fitGrid(field.partBounds(i), resolution, padding).dims);
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
+    if (perInstanceAllowed(dims) && packVolumes(dims, maxSize, offsets, size))
+      volumes = sdf::buildInstanceVolumes(field, resolution, padding);
+  }
+  if (volumes.empty()) { // the Scene layout, or the per-instance fallback (none, too many, too large)
+    volumes.push_back(sdf::buildVolume(scene, resolution, padding));
+    offsets = {glm::ivec3(0)};
+    size = volumes[0].grid.dims;
+  }
+  upload(volumes, offsets, size);
+  m_hash = hash;
+  m_layout = layout;
+  m_resolution = resolution;
+  m_padding = padding;
+  m_built = true;
+  ++m_builds;
+}
+
+void SdfTexture::upload(const std::vector<sdf::Volume>& volumes, const std::vector<glm::ivec3>& offsets,
+                        glm::ivec3 size) {
   gl::TextureDesc d;
   d.target = GL_TEXTURE_3D;
   // 16-bit floats: 11 significant bits keep distances near surfaces (where the march decides)
   // to well below the hit threshold; techniques/sdf_shadow/README.md "The SDF" has the measurement.
   d.format = GL_R16F;
-  d.width = volume.grid.dims.x;
-  d.height = volume.grid.dims.y;
-  d.depth = volume.grid.dims.z;
+  d.width = size.x;
+  d.height = size.y;
+  d.depth = size.z;
   d.minFilter = d.magFilter = GL_LINEAR;
   d.wrap = GL_CLAMP_TO_EDGE;
   if (!m_texture || m_texture.desc() != d) m_texture = gl::Texture(d, m_label);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage3D(m_texture.id(), 0, 0, 0, 0, d.width, d.height, d.depth, GL_RED, GL_FLOAT, volume.distance.data());
-  m_grid = volume.grid;
-  m_hash = hash;
-  m_resolution = resolution;
-  m_padding = padding;
-  m_buildMs = volume.buildMs;
-  m_built = true;
-  ++m_builds;
+  m_grids.clear();
+  m_buildMs = 0.0;
+  for (std::size_t i = 0; i < volumes.size(); ++i) {
+    const sdf::Volume& v = volumes[i];
+    const glm::ivec3 o = offsets[i];
+    glTextureSubImage3D(m_texture.id(), 0, o.x, o.y, o.z, v.grid.dims.x, v.grid.dims.y, v.grid.dims.z, GL_RED, GL_FLOAT,
+                        v.distance.data());
+    m_grids.push_back(v.grid);
+    m_buildMs += v.buildMs;
+  }
+  m_offsets = offsets;
+}
+
+std::size_t SdfTexture::voxels() const {
+  std::size_t n = 0;
+  for (const sdf::Grid& g : m_grids)
+    n += g.count();
+  return n;
 }
 
 void SdfTexture::bind(gl::Program& program, int unit) const {
   m_texture.bind(GLuint(unit));
+  std::vector<glm::vec4> box, extent, offset;
+  Bounds all;
+  float finest = m_grids.empty() ? 1.0f : m_grids[0].voxel;
+  for (std::size_t i = 0; i < m_grids.size(); ++i) {
+    const sdf::Grid& g = m_grids[i];
+    box.emplace_back(g.origin, g.padding);
+    extent.emplace_back(g.size(), g.voxel);
+    offset.emplace_back(glm::vec3(m_offsets[i]), 0.0f);
+    all.extend(g.origin);
+    all.extend(g.origin + g.size());
+    finest = std::min(finest, g.voxel);
+  }
   program.set("uSdf", unit)
-      .set("uSdfOrigin", m_grid.origin)
-      .set("uSdfSize", m_grid.size())
-      .set("uSdfPadding", m_grid.padding);
+      .set("uSdfCount", int(m_grids.size()))
+      .set("uSdfBox", box)
+      .set("uSdfExtent", extent)
+      .set("uSdfTexel", offset)
+      .set("uSdfOrigin", all.min)
+      .set("uSdfSize", all.max - all.min)
+      .set("uSdfVoxel", finest);
 }
 
 } // namespace rtlab

@@ -264,6 +264,14 @@ float TriangleDistance::partDistance(const Part& part, const glm::vec3& p) const
   return glm::dot(p - closest.point, pseudo) < 0.0f ? -d : d;
 }
 
+const Bounds& TriangleDistance::partBounds(std::size_t i) const {
+  return m_parts.at(i)->bounds;
+}
+
+float TriangleDistance::partDistance(std::size_t i, const glm::vec3& p) const {
+  return partDistance(*m_parts.at(i), p);
+}
+
 float TriangleDistance::signedDistance(const glm::vec3& p) const {
   float best = std::numeric_limits<float>::infinity();
   for (const auto& part : m_parts) {
@@ -278,6 +286,25 @@ float TriangleDistance::signedDistance(const glm::vec3& p) const {
   return best;
 }
 
+namespace {
+
+// Fills v.distance with `distance` at v.grid's voxel centres in parallel; times it in v.buildMs.
+template <class Distance> void fillVolume(Volume& v, const Distance& distance) {
+  v.distance.resize(v.grid.count());
+  const Grid g = v.grid;
+  const auto start = std::chrono::steady_clock::now();
+  tbb::parallel_for(tbb::blocked_range<int>(0, g.dims.y * g.dims.z), [&](const tbb::blocked_range<int>& rows) {
+    for (int row = rows.begin(); row != rows.end(); ++row) {
+      const int j = row % g.dims.y, k = row / g.dims.y;
+      float* out = v.distance.data() + std::size_t(row) * std::size_t(g.dims.x);
+      for (int i = 0; i < g.dims.x; ++i) out[i] = distance(g.centre(i, j, k));
+    }
+  });
+  v.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+} // namespace
+
 Volume buildVolume(const Scene& scene, int resolution, int padding) {
   const TriangleDistance field(scene);
   Volume v;
@@ -288,18 +315,18 @@ Volume buildVolume(const Scene& scene, int resolution, int padding) {
     return v;
   }
   v.grid = fitGrid(field.bounds(), resolution, padding);
-  v.distance.resize(v.grid.count());
-  const Grid g = v.grid;
-  const auto start = std::chrono::steady_clock::now();
-  tbb::parallel_for(tbb::blocked_range<int>(0, g.dims.y * g.dims.z), [&](const tbb::blocked_range<int>& rows) {
-    for (int row = rows.begin(); row != rows.end(); ++row) {
-      const int j = row % g.dims.y, k = row / g.dims.y;
-      float* out = v.distance.data() + std::size_t(row) * std::size_t(g.dims.x);
-      for (int i = 0; i < g.dims.x; ++i) out[i] = field.signedDistance(g.centre(i, j, k));
-    }
-  });
-  v.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  fillVolume(v, [&](const glm::vec3& p) { return field.signedDistance(p); });
   return v;
+}
+
+std::vector<Volume> buildInstanceVolumes(const TriangleDistance& field, int resolution, int padding) {
+  std::vector<Volume> volumes(field.partCount());
+  for (std::size_t i = 0; i < volumes.size(); ++i) {
+    Volume& v = volumes[i];
+    v.grid = fitGrid(field.partBounds(i), resolution, padding);
+    fillVolume(v, [&](const glm::vec3& p) { return field.partDistance(i, p); });
+  }
+  return volumes;
 }
 
 std::uint64_t geometryHash(const Scene& scene) {

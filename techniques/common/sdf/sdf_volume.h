@@ -49,6 +49,12 @@ public:
   const Bounds& bounds() const { return m_bounds; } // of the opaque triangles
   std::size_t triangleCount() const { return m_triangles; }
 
+  // The parts: one per opaque instance with triangles, in the scene's order. partDistance(i, p) is
+  // part i's own signed distance (signedDistance is the minimum over the parts).
+  std::size_t partCount() const { return m_parts.size(); }
+  const Bounds& partBounds(std::size_t i) const;
+  float partDistance(std::size_t i, const glm::vec3& p) const;
+
   struct Mesh; // welded triangles with their face, edge and vertex pseudo-normals
   struct Part; // one instance's Mesh and BVH
 
@@ -72,6 +78,12 @@ struct Volume {
 
 // The volume of `scene`'s opaque triangles. Without any, one voxel of +1e6 over a unit box.
 Volume buildVolume(const Scene& scene, int resolution, int padding);
+
+// One volume per part of `field` (per opaque instance), each over that part's own padded bounds
+// with `resolution` voxels along its longest axis, holding that part's own signed distance: the
+// scene's distance is the minimum over the volumes (outside a volume's box, the distance to the
+// box plus its padding bounds its part from below). Empty when the field has no triangles.
+std::vector<Volume> buildInstanceVolumes(const TriangleDistance& field, int resolution, int padding);
 
 // Content hash of what the volume depends on: the opaque instances' meshes (positions, normals,
 // indices) and transforms. Lights, camera and materials are left out, so moving a light keeps it.
