@@ -147,6 +147,7 @@ public:
     }
     out.push_back({"sdf_builds", double(m_sdf.builds())});
     out.push_back({"sdf_cache_hits", double(m_sdf.cacheHits())});
+    out.push_back({"sdf_shared_hits", double(m_sdf.sharedHits())});
     out.push_back({"sdf_build_ms", m_sdf.lastBuildMs()});
     out.push_back({"sdf_voxels", double(m_sdf.voxels())});
     out.push_back({"sdf_volumes", double(m_sdf.volumes())});

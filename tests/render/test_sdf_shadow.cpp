@@ -402,6 +402,7 @@ TEST(SdfShadow, FarCoordinatesStayFiniteAndKeepTheShadow) {
 }
 
 TEST(SdfShadow, RebuildsOnlyForGeometry) {
+  SdfTexture::clearSharedCache(); // count builds, not volumes other tests left in the process's cache
   TestFrame f = makeTestFrame("contact", "sdf_shadow", {}, 64, 36);
   Renderer renderer(TechniqueRegistry::instance());
   testContext().makeCurrent();
@@ -437,6 +438,21 @@ TEST(SdfShadow, RebuildsOnlyForGeometry) {
   f.params.setAssignment("light0.position=2,6,3");
   renderOwnFrame(renderer, f.params, {"sdf_shadow"}, outputs, 64, 36);
   EXPECT_EQ(builds(), 4.0) << "a light change, the other layout";
+
+  // A second renderer (the technique turned on again, another sweep point) takes the same
+  // geometry's volumes from the process-wide cache: uploaded, not built.
+  Renderer second(TechniqueRegistry::instance());
+  second.setScene(moved);
+  renderOwnFrame(second, f.params, {"sdf_shadow"}, outputs, 64, 36);
+  EXPECT_EQ(techniqueCounter(second, "sdf_shadow", "sdf_builds"), 0.0);
+  EXPECT_EQ(techniqueCounter(second, "sdf_shadow", "sdf_shared_hits"), 1.0);
+  EXPECT_EQ(techniqueCounter(second, "sdf_shadow", "sdf_build_ms"), 0.0);
+  const Image fromCache = second.readAov("visibility");
+  testContext().makeCurrent();
+  renderOwnFrame(renderer, f.params, {"sdf_shadow"}, outputs, 64, 36);
+  const Image built = renderer.readAov("visibility");
+  ASSERT_EQ(fromCache.pixels.size(), built.pixels.size());
+  EXPECT_TRUE(fromCache.pixels == built.pixels) << "the cached volumes are the built ones";
 }
 
 TEST(SdfShadow, OffIsFreeAndDebugViewsOnlyOnRequest) {

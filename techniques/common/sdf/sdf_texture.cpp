@@ -1,8 +1,67 @@
 #include "techniques/common/sdf/sdf_texture.h"
 
 #include <algorithm>
+#include <deque>
+#include <memory>
+#include <mutex>
 
 namespace rtlab {
+namespace {
+
+// What one update() built: the volumes and their places in the texture.
+struct Built {
+  std::vector<sdf::Volume> volumes;
+  std::vector<glm::ivec3> offsets;
+  glm::ivec3 size{0};
+  std::size_t bytes() const {
+    std::size_t n = 0;
+    for (const sdf::Volume& v : volumes) n += v.distance.size() * sizeof(float);
+    return n;
+  }
+};
+
+struct SharedKey {
+  std::uint64_t hash;
+  SdfTexture::Layout layout;
+  int resolution, padding, maxSize;
+  bool operator==(const SharedKey&) const = default;
+};
+
+// The process-wide cache of recent builds, newest last, at most kSharedCacheBytes in all.
+struct SharedCache {
+  std::mutex mutex;
+  std::deque<std::pair<SharedKey, std::shared_ptr<const Built>>> entries;
+
+  std::shared_ptr<const Built> find(const SharedKey& key) {
+    std::lock_guard lock(mutex);
+    for (const auto& [k, built] : entries)
+      if (k == key) return built;
+    return nullptr;
+  }
+  void add(const SharedKey& key, std::shared_ptr<const Built> built) {
+    std::lock_guard lock(mutex);
+    if (built->bytes() > SdfTexture::kSharedCacheBytes) return;
+    entries.emplace_back(key, std::move(built));
+    std::size_t total = 0;
+    for (const auto& e : entries) total += e.second->bytes();
+    while (total > SdfTexture::kSharedCacheBytes) {
+      total -= entries.front().second->bytes();
+      entries.pop_front();
+    }
+  }
+};
+
+SharedCache& sharedCache() {
+  static SharedCache cache;
+  return cache;
+}
+
+} // namespace
+
+void SdfTexture::clearSharedCache() {
+  std::lock_guard lock(sharedCache().mutex);
+  sharedCache().entries.clear();
+}
 
 bool packVolumes(const std::vector<glm::ivec3>& dims, int maxSize, std::vector<glm::ivec3>& offsets, glm::ivec3& size) {
   offsets.clear();
@@ -40,31 +99,38 @@ void SdfTexture::update(const Scene& scene, Layout layout, int resolution, int p
     ++m_cacheHits;
     return;
   }
-  std::vector<sdf::Volume> volumes;
-  std::vector<glm::ivec3> offsets;
-  glm::ivec3 size(0);
-  if (layout == Layout::PerInstance) {
-    const sdf::TriangleDistance field(scene);
-    std::vector<glm::ivec3> dims;
-    for (std::size_t i = 0; i < field.partCount() && i <= std::size_t(kMaxVolumes); ++i)
-      dims.push_back(sdf::fitGrid(field.partBounds(i), resolution, padding).dims);
-    GLint maxSize = 0;
-    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
-    if (perInstanceAllowed(dims) && packVolumes(dims, maxSize, offsets, size))
-      volumes = sdf::buildInstanceVolumes(field, resolution, padding);
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
+  const SharedKey key{hash, layout, resolution, padding, int(maxSize)};
+  std::shared_ptr<const Built> built = sharedCache().find(key);
+  if (built) {
+    upload(built->volumes, built->offsets, built->size);
+    m_buildMs = 0.0; // nothing was built
+    ++m_sharedHits;
+  } else {
+    auto fresh = std::make_shared<Built>();
+    if (layout == Layout::PerInstance) {
+      const sdf::TriangleDistance field(scene);
+      std::vector<glm::ivec3> dims;
+      for (std::size_t i = 0; i < field.partCount() && i <= std::size_t(kMaxVolumes); ++i)
+        dims.push_back(sdf::fitGrid(field.partBounds(i), resolution, padding).dims);
+      if (perInstanceAllowed(dims) && packVolumes(dims, maxSize, fresh->offsets, fresh->size))
+        fresh->volumes = sdf::buildInstanceVolumes(field, resolution, padding);
+    }
+    if (fresh->volumes.empty()) { // the Scene layout, or the per-instance fallback (none, too many, too large)
+      fresh->volumes.push_back(sdf::buildVolume(scene, resolution, padding));
+      fresh->offsets = {glm::ivec3(0)};
+      fresh->size = fresh->volumes[0].grid.dims;
+    }
+    upload(fresh->volumes, fresh->offsets, fresh->size);
+    sharedCache().add(key, std::move(fresh));
+    ++m_builds;
   }
-  if (volumes.empty()) { // the Scene layout, or the per-instance fallback (none, too many, too large)
-    volumes.push_back(sdf::buildVolume(scene, resolution, padding));
-    offsets = {glm::ivec3(0)};
-    size = volumes[0].grid.dims;
-  }
-  upload(volumes, offsets, size);
   m_hash = hash;
   m_layout = layout;
   m_resolution = resolution;
   m_padding = padding;
   m_built = true;
-  ++m_builds;
 }
 
 void SdfTexture::upload(const std::vector<sdf::Volume>& volumes, const std::vector<glm::ivec3>& offsets,

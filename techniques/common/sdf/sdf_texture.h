@@ -2,6 +2,9 @@
 // lends to each frame (FrameGraph::importTexture), rebuilt only when what they depend on changed:
 // the opaque geometry's content hash, the layout, the resolution or the padding. A light or camera
 // move never rebuilds them; a scene set whose geometry hashes the same is a cache hit (counted).
+// Recent builds are also kept for the whole process (at most kSharedCacheBytes of distances), so a
+// new SdfTexture for the same geometry and settings (the technique turned off and on in the viewer,
+// another renderer in the same process: sweep points, tests) uploads them instead of building.
 //
 // Two layouts (techniques/sdf_shadow/README.md "The SDF"): Scene, one volume over the padded
 // bounds of all opaque geometry; PerInstance, one volume per opaque instance over its own padded
@@ -29,6 +32,10 @@ public:
   // The most voxels the PerInstance volumes hold in all: what one Scene volume holds at most (a
   // cube at the largest resolution, 256^3), so neither layout builds or stores more than that.
   static constexpr std::size_t kMaxVoxels = std::size_t(256) * 256 * 256;
+  // The distances the process-wide cache of recent builds keeps at most (the oldest go first).
+  static constexpr std::size_t kSharedCacheBytes = std::size_t(128) << 20;
+  // Empties that cache (tests that count builds start from it).
+  static void clearSharedCache();
 
   explicit SdfTexture(std::string label) : m_label(std::move(label)) {}
 
@@ -46,6 +53,7 @@ public:
   int volumes() const { return int(m_grids.size()); } // 1 for Scene and for the fallback
   int builds() const { return m_builds; }             // builds done by this object
   int cacheHits() const { return m_cacheHits; }       // geometry changes that hashed the same
+  int sharedHits() const { return m_sharedHits; }     // builds taken from the process-wide cache
   double lastBuildMs() const { return m_buildMs; }    // CPU distance queries of the last build
   std::size_t voxels() const;                         // over the volumes (not the atlas' slack)
   std::size_t bytes() const { return m_texture ? m_texture.desc().bytes() : 0; }
@@ -62,7 +70,7 @@ private:
   std::uint64_t m_hash = 0;
   Layout m_layout = Layout::Scene;
   int m_resolution = 0, m_padding = 0;
-  int m_builds = 0, m_cacheHits = 0;
+  int m_builds = 0, m_cacheHits = 0, m_sharedHits = 0;
   double m_buildMs = 0.0;
 };
 
