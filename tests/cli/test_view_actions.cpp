@@ -222,8 +222,9 @@ TEST(ViewActions, TheShadowLecturesSdfBookmarkMeasuresTheMarchAgainstTheReferenc
   EXPECT_EQ(report["compare"]["mode"], "reference");
   EXPECT_EQ(report["reference"]["aov"], "visibility");
   ASSERT_TRUE(report["reference"]["rmse"].is_number()) << report.dump(1);
-  // A visibility error is at most 1 per pixel; the march at 128 voxels measured 0.07 against a
-  // 256-spp reference at 640x360 (techniques/sdf_shadow/README.md): far below 0.5, above 0.
+  // A visibility error is at most 1 per pixel; the march at its defaults measured 0.031 against a
+  // 256-spp reference at 640x360 with this light (techniques/sdf_shadow/README.md): far below 0.5;
+  // the reference after its first samples adds its noise, so the bound is loose.
   EXPECT_GT(report["reference"]["rmse"].get<double>(), 0.0);
   EXPECT_LT(report["reference"]["rmse"].get<double>(), 0.5);
   EXPECT_EQ(report["gl_errors"], 0);
