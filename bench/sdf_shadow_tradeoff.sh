@@ -21,15 +21,6 @@ trap 'rm -rf "$tmp"' EXIT
 
 source "$(dirname "$0")/tradeoff_common.sh"
 
-# The counter $2 of technique $3 in stats JSON $1 ("" when absent).
-counter() {
-  $py - "$1" "$2" "$3" <<'PYEOF'
-import json, sys
-d = json.load(open(sys.argv[1]))
-print(next(("%g" % c["value"] for c in d.get("counters", []) if c["name"] == sys.argv[2] and c["technique"] == sys.argv[3]), ""))
-PYEOF
-}
-
 read -r -a extra <<<"${SET:-}"
 common=(--scene "$scene" --size "$size" "${extra[@]}")
 reference_of visibility

@@ -1,5 +1,5 @@
 # Shared by the trade-off benchmarks (bench/transparency_tradeoff.sh, bench/arealight_tradeoff.sh,
-# bench/indirect_tradeoff.sh):
+# bench/indirect_tradeoff.sh, bench/sdf_shadow_tradeoff.sh, bench/shadow_tradeoff.sh):
 # source it after setting $rtlab (the binary) and $py (Debian's python3).
 
 # ms and bytes of technique $2's passes and resources in stats JSON $1: the sum of the median ms of
@@ -38,4 +38,13 @@ measure_row() {
   local out=$tmp/run.exr stats=$tmp/run.json
   "$rtlab" render "${common[@]}" -t "$t" --aov "$aov" --frames "$frames" --stats "$stats" --out "$out" "$@"
   echo "$scene,$t,$setting,$(cost "$stats" "$t"),$(metric "$ref" "$out" rmse),$(metric "$ref" "$out" max_abs)"
+}
+
+# The counter $2 of technique $3 in stats JSON $1 ("" when absent).
+counter() {
+  $py - "$1" "$2" "$3" <<'PYEOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+print(next(("%g" % c["value"] for c in d.get("counters", []) if c["name"] == sys.argv[2] and c["technique"] == sys.argv[3]), ""))
+PYEOF
 }
