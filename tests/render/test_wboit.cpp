@@ -1,6 +1,6 @@
 // wboit (techniques/wboit/README.md) against the contract's formula (docs/contract.md
 // "Transparency") computed on the CPU in double precision for the same fragments, and its
-// properties: independence of the draw order, the extremes of TECHNIQUES §12 (every α = 0, 24
+// properties: independence of the draw order, the extremes of the technique (every α = 0, 24
 // opaque layers, 100 faint layers with an R8 or R16F revealage, HDR layers), negative view z, the
 // complexity view, and that it costs nothing when off.
 //
