@@ -6,13 +6,17 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 took() { echo "test: $1 took $((SECONDS - step_start)) s" >&2; step_start=$SECONDS; }
 step_start=$SECONDS
+# A build directory configured without the render and CLI tests (or build-asan/ without the
+# sanitizers) would pass with tests silently missing: refuse it before building.
+bash scripts/check_build_dir.sh build full
+bash scripts/check_build_dir.sh build-asan sanitizer
 bash scripts/setup.sh --test-deps
 took "set-up and build"
 jobs=$(nproc 2>/dev/null || echo 2)
 export RTLAB_LOG=${RTLAB_LOG:-warn}
 
 echo "== unit, render and CLI tests (build/) =="
-(cd build && ctest --output-on-failure -j"$jobs")
+(cd build && ctest --output-on-failure --no-tests=error -j"$jobs")
 took "unit, render and CLI tests"
 
 echo "== unit tests under ASan + UBSan (build-asan/) =="
@@ -26,5 +30,5 @@ if ! cmake --build build-asan -j"$jobs" >build-asan/build.log 2>&1; then
 fi
 took "sanitizer build"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-(cd build-asan && ctest --output-on-failure -j"$jobs")
+(cd build-asan && ctest --output-on-failure --no-tests=error -j"$jobs")
 took "sanitizer unit tests"

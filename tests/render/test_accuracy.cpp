@@ -61,6 +61,26 @@ TEST(Accuracy, SoftTechniquesBeatTheHardShadowUnderAnAreaLight) {
     EXPECT_LT(measure("contact", technique, soft).metrics.rmse, 0.85 * hard) << technique;
 }
 
+TEST(Accuracy, PcfSoftensTheHardShadowButNotAsWellAsPcss) {
+  // PCF's fixed-width filter (pcf.radius texels) softens every edge alike: closer to the area
+  // light's penumbrae than the hard shadow map, but not as close as PCSS, whose width follows the
+  // blocker distance. Measured rmse on contact with light0.radius 0.3 at 128x128 (256 spp):
+  // shadow_map 0.037, pcf 0.030, pcss 0.018; and with a point light, where
+  // the truth is hard, pcf's blur is the error (0.025 against shadow_map's
+  // 0.014).
+  const std::vector<std::string> soft = {"light0.radius=0.3"};
+  const double hard = measure("contact", "shadow_map", soft).metrics.rmse;
+  const double pcf = measure("contact", "pcf", soft).metrics.rmse;
+  const double pcss = measure("contact", "pcss", soft).metrics.rmse;
+  EXPECT_LT(pcf, 0.9 * hard);
+  EXPECT_LT(pcss, pcf);
+  EXPECT_LT(pcf, 0.04) << "a missing or misplaced shadow gives more than 0.3";
+  const std::vector<std::string> point = {"light0.radius=0", "shadow.resolution=2048"};
+  const double hardPoint = measure("contact", "shadow_map", point).metrics.rmse;
+  const double pcfPoint = measure("contact", "pcf", point).metrics.rmse;
+  EXPECT_GT(pcfPoint, hardPoint) << "under a point light the filter's blur is error";
+}
+
 TEST(Accuracy, VssmLeaksMoreLightIntoUmbraeThanMsm) {
   // The raw bounds: both without their light-bleeding reduction (VSSM's default cuts the lowest
   // 20% of the bound and so hides most leaking at the cost of harder edges; MSM's at equal
