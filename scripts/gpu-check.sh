@@ -51,7 +51,8 @@ done
 [[ -x $rtlab ]] || usage "no rtlab binary at $rtlab (cmake --build build --target rtlab)"
 [[ -f $tolerances ]] || usage "no tolerance file $tolerances"
 [[ $size =~ ^[0-9]+x[0-9]+$ ]] || usage "--size must be WxH"
-py=$(command -v python3) || usage "python3 is needed"
+py=/usr/bin/python3 # Debian's, as the bench scripts (the python3 first on PATH may be another)
+[[ -x $py ]] || usage "python3 is needed (/usr/bin/python3)"
 work=${out:-$(mktemp -d)}
 mkdir -p "$work"
 

@@ -66,7 +66,8 @@ public:
     pass.bind = [config](PassContext& ctx, gl::Program& p) {
       bindMomentSat(ctx, p, config, 3);
       p.set("uMomentBias", ctx.params.getFloat("msm.moment_bias"))
-          .set("uBleedReduction", ctx.params.getFloat("msm.bleed_reduction"));
+          .set("uBleedReduction", ctx.params.getFloat("msm.bleed_reduction"))
+          .set("uCentred", ctx.params.getBool("msm.centred"));
       setSoftShadowUniforms(ctx, p, "msm");
     };
     addSoftShadowPasses(frame, "msm", pass);

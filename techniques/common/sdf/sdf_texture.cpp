@@ -109,8 +109,8 @@ void SdfTexture::update(const Scene& scene, Layout layout, int resolution, int p
     ++m_sharedHits;
   } else {
     auto fresh = std::make_shared<Built>();
+    const sdf::TriangleDistance field(scene);
     if (layout == Layout::PerInstance) {
-      const sdf::TriangleDistance field(scene);
       std::vector<glm::ivec3> dims;
       for (std::size_t i = 0; i < field.partCount() && i <= std::size_t(kMaxVolumes); ++i)
         dims.push_back(sdf::fitGrid(field.partBounds(i), resolution, padding).dims);
@@ -118,7 +118,7 @@ void SdfTexture::update(const Scene& scene, Layout layout, int resolution, int p
         fresh->volumes = sdf::buildInstanceVolumes(field, resolution, padding);
     }
     if (fresh->volumes.empty()) { // the Scene layout, or the per-instance fallback (none, too many, too large)
-      fresh->volumes.push_back(sdf::buildVolume(scene, resolution, padding));
+      fresh->volumes.push_back(sdf::buildVolume(field, resolution, padding));
       fresh->offsets = {glm::ivec3(0)};
       fresh->size = fresh->volumes[0].grid.dims;
     }
@@ -148,16 +148,27 @@ void SdfTexture::upload(const std::vector<sdf::Volume>& volumes, const std::vect
   if (!m_texture || m_texture.desc() != d) m_texture = gl::Texture(d, m_label);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   m_grids.clear();
+  m_box.clear();
+  m_extent.clear();
+  m_texel.clear();
   m_buildMs = 0.0;
+  Bounds all;
   for (std::size_t i = 0; i < volumes.size(); ++i) {
     const sdf::Volume& v = volumes[i];
     const glm::ivec3 o = offsets[i];
     glTextureSubImage3D(m_texture.id(), 0, o.x, o.y, o.z, v.grid.dims.x, v.grid.dims.y, v.grid.dims.z, GL_RED, GL_FLOAT,
                         v.distance.data());
     m_grids.push_back(v.grid);
+    m_box.emplace_back(v.grid.origin, v.grid.padding);
+    m_extent.emplace_back(v.grid.size(), v.grid.voxel);
+    m_texel.emplace_back(glm::vec3(o), 0.0f);
+    all.extend(v.grid.origin);
+    all.extend(v.grid.origin + v.grid.size());
+    m_finestVoxel = i == 0 ? v.grid.voxel : std::min(m_finestVoxel, v.grid.voxel);
     m_buildMs += v.buildMs;
   }
-  m_offsets = offsets;
+  m_unionOrigin = all.min;
+  m_unionSize = all.max - all.min;
 }
 
 std::size_t SdfTexture::voxels() const {
@@ -169,26 +180,14 @@ std::size_t SdfTexture::voxels() const {
 
 void SdfTexture::bind(gl::Program& program, int unit) const {
   m_texture.bind(GLuint(unit));
-  std::vector<glm::vec4> box, extent, offset;
-  Bounds all;
-  float finest = m_grids.empty() ? 1.0f : m_grids[0].voxel;
-  for (std::size_t i = 0; i < m_grids.size(); ++i) {
-    const sdf::Grid& g = m_grids[i];
-    box.emplace_back(g.origin, g.padding);
-    extent.emplace_back(g.size(), g.voxel);
-    offset.emplace_back(glm::vec3(m_offsets[i]), 0.0f);
-    all.extend(g.origin);
-    all.extend(g.origin + g.size());
-    finest = std::min(finest, g.voxel);
-  }
   program.set("uSdf", unit)
       .set("uSdfCount", int(m_grids.size()))
-      .set("uSdfBox", box)
-      .set("uSdfExtent", extent)
-      .set("uSdfTexel", offset)
-      .set("uSdfOrigin", all.min)
-      .set("uSdfSize", all.max - all.min)
-      .set("uSdfVoxel", finest);
+      .set("uSdfBox", m_box)
+      .set("uSdfExtent", m_extent)
+      .set("uSdfTexel", m_texel)
+      .set("uSdfOrigin", m_unionOrigin)
+      .set("uSdfSize", m_unionSize)
+      .set("uSdfVoxel", m_finestVoxel);
 }
 
 } // namespace rtlab

@@ -64,7 +64,11 @@ private:
   std::string m_label;
   gl::Texture m_texture;
   std::vector<sdf::Grid> m_grids;
-  std::vector<glm::ivec3> m_offsets; // each volume's first texel in the texture
+  // bind()'s uniforms, derived from the grids and their places once per upload: each volume's box
+  // and padding, extent and voxel, first texel; the union box; the finest voxel.
+  std::vector<glm::vec4> m_box, m_extent, m_texel;
+  glm::vec3 m_unionOrigin{0.0f}, m_unionSize{0.0f};
+  float m_finestVoxel = 1.0f;
   bool m_checkHash = true;
   bool m_built = false;
   std::uint64_t m_hash = 0;

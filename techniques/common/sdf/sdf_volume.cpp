@@ -306,7 +306,10 @@ template <class Distance> void fillVolume(Volume& v, const Distance& distance) {
 } // namespace
 
 Volume buildVolume(const Scene& scene, int resolution, int padding) {
-  const TriangleDistance field(scene);
+  return buildVolume(TriangleDistance(scene), resolution, padding);
+}
+
+Volume buildVolume(const TriangleDistance& field, int resolution, int padding) {
   Volume v;
   v.triangles = field.triangleCount();
   if (v.triangles == 0) {

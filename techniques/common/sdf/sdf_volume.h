@@ -78,6 +78,8 @@ struct Volume {
 
 // The volume of `scene`'s opaque triangles. Without any, one voxel of +1e6 over a unit box.
 Volume buildVolume(const Scene& scene, int resolution, int padding);
+// The same from a field already built (the per-instance build's fallback builds no second one).
+Volume buildVolume(const TriangleDistance& field, int resolution, int padding);
 
 // One volume per part of `field` (per opaque instance), each over that part's own padded bounds
 // with `resolution` voxels along its longest axis, holding that part's own signed distance: the

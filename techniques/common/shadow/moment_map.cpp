@@ -157,8 +157,6 @@ void bindMomentSat(PassContext& ctx, gl::Program& p, const MomentMapConfig& conf
       .set("uSatOffset", glm::vec4(config.satOffset ? 0.5f : 0.0f))
       .set("uSatScale", momentSatScale(ctx.params, config))
       .set("uSatWide", momentSatBits(ctx.params, config.technique) == 64);
-  // 4 moments (msm): the bound from the moments about the receiver (moments.glsl, momentsAbout).
-  if (config.moments == 4) p.set("uCentred", ctx.params.getBool(config.technique + ".centred"));
 }
 
 } // namespace rtlab

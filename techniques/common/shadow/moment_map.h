@@ -37,8 +37,8 @@ float momentSatScale(const ParamSet& params, const MomentMapConfig& config);
 // Adds the fragment pass "<id>.moments" (resource of the same name) and the compute passes
 // "<id>.sat.rows" and "<id>.sat.columns", which build the table "<id>.sat" as a storage image.
 void addMomentMapPasses(FrameGraph& frame, const MomentMapConfig& config);
-// Binds "<id>.sat" as uSat (and uSatOffset, uSatScale, uSatWide; with 4 moments uCentred from
-// "<id>.centred") at `unit` for shaders/shadow/common/moments.glsl.
+// Binds "<id>.sat" as uSat (and uSatOffset, uSatScale, uSatWide) at `unit` for
+// shaders/shadow/common/moments.glsl.
 void bindMomentSat(PassContext& ctx, gl::Program& program, const MomentMapConfig& config, int unit);
 std::string momentSatResource(const std::string& technique);
 // Debug view "aov.<view>": the first channel of "<technique>.moments" over the frame.
