@@ -19,6 +19,16 @@
 #     --render-only B DIR render the set through backend B (egl|osmesa) into DIR and stop
 #     --compare A B       compare two folders made by --render-only (A: the GPU's, B: llvmpipe's);
 #                         the way to use a GPU machine without Mesa (render there, compare here)
+#     --timings DIR       per-pass times instead of the comparison: every technique on its showcase
+#                         scene, full frame (color), through --backend (default egl), at --size
+#                         (default 1920x1080 in this mode), --frames measured frames (default 20, after 2
+#                         warm-up frames), GL timer queries on a GPU (cpu-finish on llvmpipe); writes
+#                         DIR/<technique>.json and prints DIR/timings.md (median ms per pass)
+#     --render-tests BIN [DIR]  run the render-test binary BIN (build/tests/rtlab_render_tests) on
+#                         --backend (default egl), gtest's XML report in DIR (default the --out folder);
+#                         prints the renderer, the counts and each failed test; exit 1 on a failure
+#     --backend B         the context of --timings and --render-tests: egl (default) or osmesa
+#     --frames N          measured frames of --timings (default 20)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -32,12 +42,18 @@ render_only=""
 render_dir=""
 compare_a=""
 compare_b=""
+timings_dir=""
+tests_bin=""
+tests_dir=""
+backend=egl
+frames=20
+size_given=0
 sets=()
 usage() { echo "gpu-check: $1 (see the header of scripts/gpu-check.sh)" >&2; exit 2; }
 while [[ $# -gt 0 ]]; do
   case $1 in
     --rtlab) rtlab=${2:?}; shift 2 ;;
-    --size) size=${2:?}; shift 2 ;;
+    --size) size=${2:?}; size_given=1; shift 2 ;;
     --out) out=${2:?}; shift 2 ;;
     --techniques) only=${2:?}; shift 2 ;;
     --tolerances) tolerances=${2:?}; shift 2 ;;
@@ -45,16 +61,64 @@ while [[ $# -gt 0 ]]; do
     --self-test) self_test=1; shift ;;
     --render-only) render_only=${2:?}; render_dir=${3:?}; shift 3 ;;
     --compare) compare_a=${2:?}; compare_b=${3:?}; shift 3 ;;
+    --timings) timings_dir=${2:?}; shift 2 ;;
+    --render-tests)
+      tests_bin=${2:?}; shift 2
+      if [[ $# -gt 0 && $1 != --* ]]; then tests_dir=$1; shift; fi ;;
+    --backend) backend=${2:?}; shift 2 ;;
+    --frames) frames=${2:?}; shift 2 ;;
     *) usage "unknown option '$1'" ;;
   esac
 done
-[[ -x $rtlab ]] || usage "no rtlab binary at $rtlab (cmake --build build --target rtlab)"
+[[ $backend == egl || $backend == osmesa ]] || usage "--backend must be egl or osmesa"
+[[ $frames =~ ^[1-9][0-9]*$ ]] || usage "--frames must be a positive integer"
+[[ -n $timings_dir && $size_given == 0 ]] && size=1920x1080
 [[ -f $tolerances ]] || usage "no tolerance file $tolerances"
 [[ $size =~ ^[0-9]+x[0-9]+$ ]] || usage "--size must be WxH"
-py=/usr/bin/python3 # Debian's, as the bench scripts (the python3 first on PATH may be another)
-[[ -x $py ]] || usage "python3 is needed (/usr/bin/python3)"
+# Debian's python3, as the bench scripts (the python3 first on PATH may be another); elsewhere (a GPU
+# machine's image) the one on PATH: the script needs only json and xml.
+py=/usr/bin/python3
+[[ -x $py ]] || py=$(command -v python3 || true)
+[[ -n $py ]] || usage "python3 is needed"
 work=${out:-$(mktemp -d)}
 mkdir -p "$work"
+
+[[ -x $rtlab ]] || usage "no rtlab binary at $rtlab (cmake --build build --target rtlab)"
+
+# --render-tests: the render tests on one backend (on a GPU machine: the GPU through EGL). The
+# binary finds its data through RTLAB_DATA_DIR (this checkout) and writes its scratch files into
+# its build folder's test_tmp, created here when the binary was copied without it.
+if [[ -n $tests_bin ]]; then
+  [[ -x $tests_bin ]] || usage "no render-test binary at $tests_bin"
+  dir=${tests_dir:-$work}
+  mkdir -p "$dir"
+  status=0
+  RTLAB_DATA_DIR=${RTLAB_DATA_DIR:-$PWD} RTLAB_TEST_BACKEND=$backend "$tests_bin" \
+    --gtest_output="xml:$dir/render_tests.xml" >"$dir/render_tests.log" 2>&1 || status=$?
+  # The renderer's name, from one tiny frame of the rtlab binary on the same backend.
+  renderer="unknown renderer (no $rtlab)"
+  if [[ -x $rtlab ]] && "$rtlab" render --backend "$backend" --size 8x8 --out "$dir/renderer.exr" \
+      --stats "$dir/renderer.json" 2>/dev/null; then
+    renderer=$("$py" -c 'import json,sys; print(json.load(open(sys.argv[1]))["renderer"])' "$dir/renderer.json")
+  fi
+  "$py" - "$dir/render_tests.xml" "$dir/render_tests.log" "$backend" "$renderer" <<'PYEOF' || exit 1
+import sys, xml.etree.ElementTree as ET
+xml_file, log, backend, renderer = sys.argv[1:]
+try:
+    root = ET.parse(xml_file).getroot()
+except (OSError, ET.ParseError) as e:
+    print("gpu-check: the render tests wrote no report (%s); the end of %s:" % (e, log))
+    print("".join(open(log, errors="replace").readlines()[-30:]))
+    sys.exit(1)
+failed = [c.get("classname") + "." + c.get("name") for c in root.iter("testcase") if c.find("failure") is not None]
+print("gpu-check: render tests on %s (%s): %s tests, %d failed, %s s" % (
+    backend, renderer, root.get("tests"), len(failed), root.get("time")))
+for f in failed: print("  FAILED " + f)
+sys.exit(1 if failed else 0)
+PYEOF
+  [[ $status == 0 ]] || { echo "gpu-check: the render-test binary exited with $status (log: $dir/render_tests.log)" >&2; exit 1; }
+  exit 0
+fi
 
 # technique <TAB> stage <TAB> data AOV <TAB> scene, one line each, from the registry.
 list_jobs() {
@@ -89,6 +153,34 @@ size_of() { "$py" -c 'import json,sys; print("%dx%d" % tuple(json.load(open(sys.
 
 list_jobs > "$work/jobs.tsv"
 [[ -s $work/jobs.tsv ]] || usage "no technique to check"
+
+# --timings: each technique's whole frame on its showcase scene; the table lists every pass's median.
+if [[ -n $timings_dir ]]; then
+  mkdir -p "$timings_dir"
+  while IFS=$'\t' read -r id stage aov scene; do
+    "$rtlab" render --backend "$backend" --scene "$scene" -t "$id" --size "$size" --frames "$frames" \
+      --out "$timings_dir/$id.png" --stats "$timings_dir/$id.json" "${sets[@]}" 2>"$timings_dir/$id.log" ||
+      { echo "gpu-check: $id failed to render through $backend:" >&2; cat "$timings_dir/$id.log" >&2; exit 1; }
+  done < "$work/jobs.tsv"
+  "$py" - "$work/jobs.tsv" "$timings_dir" <<'PYEOF'
+import json, sys
+jobs, folder = sys.argv[1:]
+lines, head = [], None
+for line in open(jobs):
+    tid, stage, aov, scene = line.rstrip("\n").split("\t")
+    s = json.load(open("%s/%s.json" % (folder, tid)))
+    head = head or "%s, %s, %dx%d, %d frames, timing %s" % (s["renderer"], s["backend"], s["size"][0], s["size"][1], s["frames"], s["timing"])
+    own = ", ".join("%s %.3f" % (p["name"], p["ms"]) for p in s["passes"] if p["technique"] == tid)
+    frame = ", ".join("%s %.3f" % (p["name"], p["ms"]) for p in s["passes"] if p["technique"] == "")
+    lines.append("| %s | %s | %s | %s | %.3f | %d |" % (tid, scene, own or "-", frame, s["frame_ms"], s["gl_errors"]))
+with open("%s/timings.md" % folder, "w") as t:
+    t.write("%s; median ms per pass\n\n" % head)
+    t.write("| technique | scene | its passes | framework passes | frame | GL errors |\n|---|---|---|---|---:|---:|\n")
+    t.write("\n".join(lines) + "\n")
+print(open("%s/timings.md" % folder).read(), end="")
+PYEOF
+  exit 0
+fi
 
 if [[ -n $render_only ]]; then
   render_set "$render_only" "$render_dir"

@@ -11,9 +11,16 @@ const char* bufferKindName(BufferKind kind) {
   return "storage";
 }
 
-BufferObject::BufferObject(const BufferDesc& desc, const std::string& label) : m_buffer(label), m_desc(desc) {
-  glNamedBufferStorage(m_buffer.id(), GLsizeiptr(desc.bytes), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
-  clear();
+BufferObject::BufferObject(const BufferDesc& desc, const std::string& label, const void* initial)
+    : m_buffer(label), m_desc(desc) {
+  // The initial contents go in with the storage, from the CPU, never as a GPU clear: on NVIDIA's
+  // driver (580, H100) a glNamedBufferSubData of 98 KB issued right after glClearNamedBufferData on
+  // a new buffer was overtaken by the clear, and the buffer read back as zeros (llvmpipe keeps the
+  // order). Zeros from the CPU cost one copy of the buffer when it is made (the pool reuses it).
+  std::vector<unsigned char> zeros;
+  if (!initial) zeros.resize(desc.bytes);
+  glNamedBufferStorage(m_buffer.id(), GLsizeiptr(desc.bytes), initial ? initial : zeros.data(),
+                       GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
 }
 
 void BufferObject::clear() const {

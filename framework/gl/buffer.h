@@ -26,8 +26,9 @@ struct BufferDesc {
 class BufferObject {
 public:
   BufferObject() = default;
-  // Allocates `desc.bytes` (zero-filled), updatable with glNamedBufferSubData and readable back.
-  BufferObject(const BufferDesc& desc, const std::string& label);
+  // Allocates `desc.bytes`, updatable with glNamedBufferSubData and readable back, holding `initial`
+  // (desc.bytes bytes) or zeros.
+  BufferObject(const BufferDesc& desc, const std::string& label, const void* initial = nullptr);
 
   GLuint id() const { return m_buffer.id(); }
   const BufferDesc& desc() const { return m_desc; }

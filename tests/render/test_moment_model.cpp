@@ -2,13 +2,14 @@
 // techniques/msm/README.md, "Precision"): vssm and msm render `contact` and `stacked`, and their
 // own moment map and summed-area table are read back. Then
 //   1. the GL table equals, word for word, the CPU model's table (tests/support/moment_model.h) built
-//      from the read-back moments: sat.comp's fixed point and wrap-around are what the model says;
+//      from the moments as sat.comp reads them: its fixed point and wrap-around are what the model says;
 //   2. boxMoments and the bound on that table (tests/render/shaders/moment_lookup.comp, the
 //      functions of shaders/shadow/common/moments.glsl) over a grid of lookups into the scene's map
 //      (every radius the techniques use, receivers at and near the box centre's depth) are what the
 //      float model computes, and match the fp64 model of the same table within kBound, with at most
 //      kMaxOver lookups over it: vssm, and msm with `msm.centred`; msm without it departs on a
-//      sixth of them or more (the finding);
+//      sixth of them or more (the finding), and matches the float model on llvmpipe only (a GPU's
+//      fused multiply-adds change its last bits, which that solve amplifies);
 //   3. against the fp64 model of the exact stored moments (a lossless table), the 64-bit table
 //      (`<id>.sat_bits` 64) departs less often than the 32-bit one.
 #include "frame_graph_fixture.h"
@@ -48,13 +49,33 @@ std::string caseName(const Case& c) {
   return c.technique + " on " + c.scene + ", " + std::to_string(c.bits) + "-bit table" + (c.centred ? ", centred" : "");
 }
 
-// The stored moments and the table of the last frame's "<id>.moments" and "<id>.sat".
+// The stored moments of the last frame's "<id>.moments" as sat.comp reads them (texelFetch in a
+// shader: tests/render/shaders/moment_fetch.comp), and its table "<id>.sat".
 std::vector<float> readMoments(Renderer& r, const std::string& id, int channels) {
   const gl::Texture* t = r.resource(id + ".moments");
   EXPECT_NE(t, nullptr);
   if (!t) return {};
-  std::vector<float> v(size_t(kMapSize) * kMapSize * channels);
-  glGetTextureImage(t->id(), 0, channels == 2 ? GL_RG : GL_RGBA, GL_FLOAT, GLsizei(v.size() * sizeof(float)), v.data());
+  gl::ProgramDesc desc;
+  desc.stages = {testShader("moment_fetch.comp")};
+  desc.label = "moment-fetch";
+  static gl::ProgramCache programs;
+  gl::Program& p = programs.get(desc);
+  const std::size_t texels = std::size_t(kMapSize) * kMapSize;
+  gl::BufferObject out({gl::BufferKind::Storage, texels * sizeof(glm::vec4)}, "moment-texels");
+  p.use();
+  p.set("uSize", kMapSize);
+  glBindTextureUnit(0, t->id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, out.id());
+  glDispatchCompute(GLuint((texels + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  const std::vector<glm::vec4> rgba = out.downloadAs<glm::vec4>();
+  glUseProgram(0);
+  glBindTextureUnit(0, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  std::vector<float> v;
+  v.reserve(texels * channels);
+  for (const glm::vec4& m : rgba)
+    for (int ch = 0; ch < channels; ++ch) v.push_back(m[ch]);
   return v;
 }
 std::vector<uint32_t> readTable(Renderer& r, const std::string& id, int channels, int width) {
@@ -140,9 +161,9 @@ Outcome check(const Case& c) {
   desc.label = "moment-lookup";
   static gl::ProgramCache programs;
   gl::Program& p = programs.get(desc);
-  gl::BufferObject queries({gl::BufferKind::Storage, l.queries.size() * sizeof(glm::vec4)}, "moment-queries");
+  gl::BufferObject queries({gl::BufferKind::Storage, l.queries.size() * sizeof(glm::vec4)}, "moment-queries",
+                           l.queries.data());
   gl::BufferObject results({gl::BufferKind::Storage, 2 * l.queries.size() * sizeof(glm::vec4)}, "moment-results");
-  queries.upload(l.queries.data(), l.queries.size() * sizeof(glm::vec4));
   p.use();
   glBindTextureUnit(3, r.renderer->resource(c.technique + ".sat")->id());
   p.set("uSat", 3)
@@ -208,7 +229,17 @@ TEST(MomentModel, GlTableAndLookupsMatchTheFp64Model) {
         const Outcome wide = check({technique, scene, 64, centred});
         const std::string what = std::string(technique) + " on " + scene + (centred ? ", centred" : "");
         for (const Outcome& o : {narrow, wide}) {
-          EXPECT_EQ(o.overFloat, 0) << what; // the model emulates the shader
+          if (std::string(technique) == "vssm" || centred) {
+            EXPECT_EQ(o.overFloat, 0) << what; // the model emulates the shader
+          } else if (testContext().info().software) {
+            // The uncentred 4MSM in float amplifies last-bit differences (the finding below), and
+            // GLSL lets a compiler fuse multiply-adds (the 64-bit table's high * 2^32 + low) and
+            // divide to 2.5 ulp: the float model is llvmpipe's arithmetic exactly, not a GPU's. On
+            // an NVIDIA H200, 16-18 of 6144 lookups (32-bit table) and 1093-1487 (64-bit) leave the
+            // float model by more than kBound, as many as leave the fp64 model: docs/testing.md,
+            // "Skip conditions"; docs/performance.md, "Issue 20: a GPU in the loop".
+            EXPECT_EQ(o.overFloat, 0) << what;
+          }
           if (std::string(technique) == "vssm" || centred) {
             // Float arithmetic after an exact table is good to kBound (measured: at most 1 lookup
             // over it, by 0.0132; techniques/msm/README.md, "Precision").

@@ -222,7 +222,20 @@ bool momentBlockerDepth4(vec4 moments, float t, float momentBias, out float zOcc
   float d22 = max(b.y - b.x * b.x, 1e-12);
   float l32d22 = b.z - b.x * b.y;
   float l32 = l32d22 / d22;
-  float d33 = max((b.w - b.y * b.y) - l32 * l32d22, 1e-12);
+  float d33 = (b.w - b.y * b.y) - l32 * l32d22;
+  if (d33 <= 1e-12) {
+    // The biased moments hold at most two depths (one depth at 0 or 1, or the largest bias on one
+    // depth): the Hankel matrix is singular, and the quadratic's coefficients below would be
+    // rounding noise divided by the floor, so their roots, and whether a blocker is found, would
+    // depend on the driver's float rounding (NVIDIA and llvmpipe disagreed). The two-moment
+    // estimate on the same biased moments, spelled out as above, is stable there.
+    float variance = max(b.y - b.x * b.x, 1e-12);
+    if (t <= b.x) return false;
+    float unoccluded = variance / (variance + (t - b.x) * (t - b.x));
+    if (unoccluded >= 0.99) return false;
+    zOcc = clamp((b.x - unoccluded * t) / (1.0 - unoccluded), 0.0, t);
+    return true;
+  }
   vec3 c = vec3(1.0, t, t * t);
   c.y -= b.x;
   c.z -= b.y + l32 * c.y;
