@@ -27,6 +27,7 @@
 #     --render-tests BIN [DIR]  run the render-test binary BIN (build/tests/rtlab_render_tests) on
 #                         --backend (default egl), gtest's XML report in DIR (default the --out folder);
 #                         prints the renderer, the counts and each failed test; exit 1 on a failure
+#     --filter PATTERN    only these render tests (gtest's --gtest_filter syntax)
 #     --backend B         the context of --timings and --render-tests: egl (default) or osmesa
 #     --frames N          measured frames of --timings (default 20)
 set -euo pipefail
@@ -45,6 +46,7 @@ compare_b=""
 timings_dir=""
 tests_bin=""
 tests_dir=""
+filter="*"
 backend=egl
 frames=20
 size_given=0
@@ -65,6 +67,7 @@ while [[ $# -gt 0 ]]; do
     --render-tests)
       tests_bin=${2:?}; shift 2
       if [[ $# -gt 0 && $1 != --* ]]; then tests_dir=$1; shift; fi ;;
+    --filter) filter=${2:?}; shift 2 ;;
     --backend) backend=${2:?}; shift 2 ;;
     --frames) frames=${2:?}; shift 2 ;;
     *) usage "unknown option '$1'" ;;
@@ -93,8 +96,9 @@ if [[ -n $tests_bin ]]; then
   dir=${tests_dir:-$work}
   mkdir -p "$dir"
   status=0
+  rm -f "$dir/render_tests.xml" # a report left by an earlier run must not stand for this one
   RTLAB_DATA_DIR=${RTLAB_DATA_DIR:-$PWD} RTLAB_TEST_BACKEND=$backend "$tests_bin" \
-    --gtest_output="xml:$dir/render_tests.xml" >"$dir/render_tests.log" 2>&1 || status=$?
+    --gtest_filter="$filter" --gtest_output="xml:$dir/render_tests.xml" >"$dir/render_tests.log" 2>&1 || status=$?
   # The renderer's name, from one tiny frame of the rtlab binary on the same backend.
   renderer="unknown renderer (no $rtlab)"
   if [[ -x $rtlab ]] && "$rtlab" render --backend "$backend" --size 8x8 --out "$dir/renderer.exr" \

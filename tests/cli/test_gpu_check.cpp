@@ -88,3 +88,51 @@ TEST(GpuCheck, ScriptSelfTestTableAndFailures) {
   const auto bad = runProcess(common[0], {"--size", "big"}, 60);
   EXPECT_EQ(bad.exitCode, 2) << bad.err;
 }
+
+// --timings: one row per technique with its own passes (from the stats' pass list) and the
+// framework's, on its showcase scene; the size and frame count are the options'.
+TEST(GpuCheck, TimingsListEachTechniquesPasses) {
+  const fs::path dir = freshDir("timings");
+  const std::string script = std::string(RTLAB_SOURCE_DIR) + "/scripts/gpu-check.sh";
+  const auto r = runProcess(script, {"--rtlab", RTLAB_BINARY, "--timings", (dir / "t").string(), "--size", "64x36",
+                                     "--frames", "1", "--techniques", "pcss,bloom", "--out", (dir / "work").string()},
+                            300);
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("64x36, 1 frames, timing cpu-finish"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| pcss | contact | shadow.depth "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("pcss.visibility "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| bloom | glow | bloom.bright "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("bloom.composite "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("gbuffer "), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(dir / "t" / "pcss.json"));
+  EXPECT_TRUE(fs::exists(dir / "t" / "timings.md"));
+  EXPECT_EQ(runProcess(script, {"--timings", (dir / "u").string(), "--frames", "0"}, 60).exitCode, 2);
+}
+
+// --render-tests: the binary's XML report read back, its failures named (exit 1), a passing filter
+// (exit 0), a missing binary a usage error (exit 2). The failing binary is a stand-in script that
+// writes gtest's report format.
+TEST(GpuCheck, RenderTestsReportPassesAndNamesFailures) {
+  const fs::path dir = freshDir("render_tests");
+  const std::string script = std::string(RTLAB_SOURCE_DIR) + "/scripts/gpu-check.sh";
+  const auto ok = runProcess(script, {"--rtlab", RTLAB_BINARY, "--render-tests", RTLAB_RENDER_TESTS,
+                                      (dir / "ok").string(), "--filter", "Context.ParseBackend"}, 300);
+  ASSERT_EQ(ok.exitCode, 0) << ok.out << ok.err;
+  EXPECT_NE(ok.out.find(": 1 tests, 0 failed"), std::string::npos) << ok.out;
+
+  const fs::path fake = dir / "fake_tests.sh";
+  std::ofstream(fake) << "#!/bin/sh\n"
+                         "for a in \"$@\"; do case $a in --gtest_output=xml:*) out=${a#--gtest_output=xml:} ;; esac; done\n"
+                         "cat > \"$out\" <<'X'\n"
+                         "<testsuites tests=\"2\" time=\"0.1\"><testsuite name=\"S\">"
+                         "<testcase classname=\"S\" name=\"Passes\"/>"
+                         "<testcase classname=\"S\" name=\"Breaks\"><failure message=\"x\"/></testcase>"
+                         "</testsuite></testsuites>\nX\nexit 1\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  const auto bad = runProcess(script, {"--rtlab", RTLAB_BINARY, "--render-tests", fake.string(), (dir / "bad").string()}, 120);
+  EXPECT_EQ(bad.exitCode, 1) << bad.out << bad.err;
+  EXPECT_NE(bad.out.find("2 tests, 1 failed"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("FAILED S.Breaks"), std::string::npos) << bad.out;
+
+  EXPECT_EQ(runProcess(script, {"--render-tests", (dir / "missing").string()}, 60).exitCode, 2);
+}
