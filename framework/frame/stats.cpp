@@ -15,10 +15,11 @@ void FrameStats::addFrame(const PassTimer& timer, int glErrors) {
   for (const auto& s : timer.frameSamples()) {
     auto it = std::find_if(m_series.begin(), m_series.end(), [&](const Series& x) { return x.name == s.pass; });
     if (it == m_series.end()) {
-      m_series.push_back(Series{s.pass, s.technique, {}});
+      m_series.push_back(Series{s.pass, s.technique, {}, {}});
       it = m_series.end() - 1;
     }
     it->ms.push_back(s.ms);
+    it->work.push_back(s.work);
   }
   m_frameMs.push_back(timer.frameMs());
   m_glErrors += glErrors;
@@ -27,9 +28,11 @@ void FrameStats::addFrame(const PassTimer& timer, int glErrors) {
 std::vector<FrameStats::PassSummary> FrameStats::passes() const {
   std::vector<PassSummary> out;
   for (const auto& s : m_series) {
-    PassSummary p{s.name, s.technique, median(s.ms), 0, 0};
+    PassSummary p{s.name, s.technique, median(s.ms), 0, 0, std::nullopt};
     p.msMin = *std::min_element(s.ms.begin(), s.ms.end());
     p.msMax = *std::max_element(s.ms.begin(), s.ms.end());
+    if (std::all_of(s.work.begin(), s.work.end(), [](const auto& w) { return w.has_value(); }))
+      for (const auto& w : s.work) p.workMin = p.workMin ? std::min(*p.workMin, *w) : *w;
     out.push_back(p);
   }
   return out;

@@ -49,6 +49,9 @@ public:
   struct PassSummary {
     std::string name, technique;
     double ms = 0, msMin = 0, msMax = 0; // median, min, max over frames
+    // The least GL work of the pass over the frames (PassTimer::Sample::work), when every frame
+    // counted it; not written to the JSON.
+    std::optional<std::uint64_t> workMin;
   };
   std::vector<PassSummary> passes() const;
   double frameMs() const; // median
@@ -67,6 +70,7 @@ private:
   struct Series {
     std::string name, technique;
     std::vector<double> ms;
+    std::vector<std::optional<std::uint64_t>> work;
   };
   std::vector<Series> m_series;
   std::vector<double> m_frameMs;

@@ -1,6 +1,7 @@
 // Headless Chromium for the page tests (the sweep report, the showcase): a screenshot and the
 // DOM after load, console messages, and whether a screenshot is blank. scripts/test.sh installs
-// chromium (setup.sh --test-deps); under CI its absence fails, elsewhere the test skips.
+// chromium (setup.sh --test-deps); its absence fails the test everywhere, with a message that
+// says so when CI is set (docs/testing.md, "Skip conditions").
 #pragma once
 #include "process.h"
 
@@ -18,7 +19,7 @@ namespace rtlab::test {
 
 inline const std::filesystem::path kChromium = "/usr/bin/chromium";
 
-// GTEST_SKIP/FAIL from the caller when this returns false.
+// The caller fails (ASSERT_TRUE) when this returns false: a page left unchecked is not a pass.
 inline bool chromiumAvailable(std::string& why) {
   if (std::filesystem::exists(kChromium)) return true;
   why = std::getenv("CI") ? "CI is set but /usr/bin/chromium is missing (scripts/setup.sh --test-deps)"

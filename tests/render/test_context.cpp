@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "gl/debug.h"
@@ -42,6 +44,21 @@ TEST(Context, ReportsRendererAndBackend) {
   const std::string name = context.backendName();
   EXPECT_TRUE(name == "egl-surfaceless" || name == "egl-device" || name == "osmesa") << name;
   EXPECT_FALSE(context.isWindow());
+}
+
+TEST(Context, BackendIsTheOneAskedForAndEglUnderCi) {
+  // RTLAB_TEST_BACKEND names the backend the whole binary runs on (render_main.cpp); unset, the auto
+  // choice tries EGL first and falls back to OSMesa. Under CI that fallback would run every render
+  // test on OSMesa instead of EGL with nothing failing: there it fails (docs/testing.md, "Skip
+  // conditions").
+  const std::string name = testContext().backendName();
+  const bool egl = name.rfind("egl-", 0) == 0;
+  const char* asked = std::getenv("RTLAB_TEST_BACKEND");
+  const char* ci = std::getenv("CI");
+  if (asked && std::string(asked) == "osmesa") EXPECT_EQ(name, "osmesa");
+  else if (asked && std::string(asked) == "egl") EXPECT_TRUE(egl) << name;
+  else if (ci && *ci) EXPECT_TRUE(egl) << "CI is set and the auto backend fell back to " << name;
+  else if (!egl) std::printf("note: EGL is unavailable; the render tests run on %s\n", name.c_str());
 }
 
 TEST(Context, SoftwareFlagMatchesRenderer) {
