@@ -155,10 +155,9 @@ void installDebugOutput() {
 }
 
 int drainGlErrors() {
-  int polled = 0;
-  GLenum firstPolled = GL_NO_ERROR;
-  for (GLenum e = glGetError(); e != GL_NO_ERROR && polled < kMaxErrorDrain; e = glGetError()) {
-    if (polled++ == 0) firstPolled = e;
+  std::vector<GLenum> codes;
+  for (GLenum e = glGetError(); e != GL_NO_ERROR && int(codes.size()) < kMaxErrorDrain; e = glGetError()) {
+    codes.push_back(e);
     // With debug output on, the callback has already logged the message with its text.
     if (g_debugOutput)
       logDebug("glGetError: " + glErrorName(e));
@@ -170,9 +169,10 @@ int drainGlErrors() {
   const int other = g_otherErrors.exchange(0);
   // One API error is reported both by glGetError and by a debug message; glGetError keeps only the
   // first of several, the callback sees all of them (and has counted them in the total already).
+  const int polled = int(codes.size());
   const int unreported = std::max(polled - api, 0);
-  for (int i = 0; i < unreported; ++i)
-    countError("glGetError: " + glErrorName(firstPolled) + " (no debug message)");
+  for (int i = polled - unreported; i < polled; ++i)
+    countError("glGetError: " + glErrorName(codes[size_t(i)]) + " (no debug message)");
   return api + unreported + other;
 }
 

@@ -59,6 +59,22 @@ TEST(GlErrors, DrainingAFrameKeepsTheErrorInTheProcessTotal) {
   EXPECT_EQ(glErrorTotal(), before + 1);         // the total keeps it
 }
 
+TEST(GlErrors, AnErrorWithoutADebugMessageCountsOnceWhenDrained) {
+  testContext().makeCurrent();
+  ExpectGlErrors expected(1);
+  const std::int64_t before = glErrorTotal();
+  glDisable(GL_DEBUG_OUTPUT); // as on a context without KHR_debug: glGetError alone reports it
+  glBindTexture(GL_TEXTURE_2D, kNeverGenerated);
+  glEnable(GL_DEBUG_OUTPUT);
+  EXPECT_EQ(glErrorTotal(), before); // no callback: not counted yet
+  EXPECT_EQ(drainGlErrors(), 1);
+  EXPECT_EQ(drainGlErrors(), 0);
+  EXPECT_EQ(glErrorTotal(), before + 1);
+  const auto messages = glErrorMessagesSince(before);
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_EQ(messages[0], "glGetError: GL_INVALID_OPERATION (no debug message)");
+}
+
 TEST(GlErrors, AppendGlErrorReportWritesTheTotalAndTheMessages) {
   testContext().makeCurrent();
   {
