@@ -1,6 +1,7 @@
 // rtlab: the command-line entry point. Every failure is one line on stderr beginning
 // "rtlab: error:" and a documented exit code (docs/contract.md "Exit codes").
 #include "app/commands.h"
+#include "gl/debug.h"
 #include "util/interrupt.h"
 #include "util/error.h"
 #include "util/version.h"
@@ -8,6 +9,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <string>
@@ -29,10 +31,29 @@ const char* kUsage =
     "  --version  version and git commit\n\n"
     "'rtlab <command> --help' describes a command's options.\n";
 
+std::string g_glErrorsFile; // RTLAB_GL_ERRORS_FILE
+std::string g_glErrorsWho;  // "rtlab <command> (pid N)"
+
+void reportGlErrors() {
+  if (!rtlab::appendGlErrorReport(g_glErrorsFile, g_glErrorsWho))
+    std::fprintf(stderr, "rtlab: warning: could not append the GL error report to %s\n", g_glErrorsFile.c_str());
+}
+
+// RTLAB_GL_ERRORS_FILE=PATH: the process appends its GL error total to PATH when it exits
+// (docs/contract.md "GL error report"; the CLI tests use it, docs/testing.md "GL errors").
+void reportGlErrorsAtExit(int argc, char** argv) {
+  const char* path = std::getenv("RTLAB_GL_ERRORS_FILE");
+  if (!path || !*path) return;
+  g_glErrorsFile = path;
+  g_glErrorsWho = std::string("rtlab ") + (argc > 1 ? argv[1] : "") + " (pid " + std::to_string(::getpid()) + ")";
+  std::atexit(reportGlErrors);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
   rtlab::installInterruptHandler();
+  reportGlErrorsAtExit(argc, argv);
   using namespace rtlab;
   try {
     if (argc < 2) {

@@ -1,8 +1,12 @@
 #include "gl/debug.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <deque>
 #include <map>
 #include <mutex>
 #include <tuple>
@@ -14,14 +18,30 @@ namespace {
 
 constexpr int kMaxRepeats = 3;        // times one message is logged before it is only counted
 constexpr int kMaxErrorDrain = 1024;  // guards against a driver that never returns GL_NO_ERROR
+constexpr size_t kKeptMessages = 64;  // error texts kept for glErrorMessagesSince
 
+// Since the last drainGlErrors (the per-frame counter):
 std::atomic<int> g_apiErrors{0};   // debug messages of type ERROR from GL_DEBUG_SOURCE_API
 std::atomic<int> g_otherErrors{0}; // debug messages of type ERROR from any other source
+// Since the process started, never reset (glErrorTotal).
+std::atomic<std::int64_t> g_total{0};
 bool g_debugOutput = false;        // the callback is installed on the current context
 GLint g_maxLabelLength = 0;
 
 std::mutex g_repeatMutex;
 std::map<std::tuple<GLenum, GLenum, GLuint>, int> g_repeats;
+
+// The last kKeptMessages errors: (the total once this error was counted, its text).
+std::mutex g_messageMutex;
+std::deque<std::pair<std::int64_t, std::string>> g_messages;
+
+// Adds one error to the process total and keeps its text.
+void countError(std::string text) {
+  const std::int64_t n = g_total.fetch_add(1) + 1;
+  std::lock_guard<std::mutex> lock(g_messageMutex);
+  g_messages.emplace_back(n, std::move(text));
+  if (g_messages.size() > kKeptMessages) g_messages.pop_front();
+}
 
 bool hasDebugApi() {
   return (GLAD_GL_VERSION_4_3 || GLAD_GL_KHR_debug) && glDebugMessageCallback && glObjectLabel;
@@ -58,9 +78,16 @@ void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum s
   // A failed compile or link is not a GL error: the program's own log reports it (file:line), and
   // a failed hot reload must not count as an error of the frame.
   const bool isError = type == GL_DEBUG_TYPE_ERROR && source != GL_DEBUG_SOURCE_SHADER_COMPILER;
-  if (isError) (source == GL_DEBUG_SOURCE_API ? g_apiErrors : g_otherErrors).fetch_add(1);
-  if (severity == GL_DEBUG_SEVERITY_NOTIFICATION && logLevel() != LogLevel::Debug) return;
-  if (!isError && logLevel() != LogLevel::Debug) return;
+  const bool debugLog = logLevel() == LogLevel::Debug;
+  if (!isError && !debugLog) return;
+  std::string text = length >= 0 ? std::string(message, static_cast<size_t>(length)) : message;
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  std::string line = std::string("GL ") + sourceName(source) + " " + typeName(type) + ": " + text;
+  if (isError) {
+    (source == GL_DEBUG_SOURCE_API ? g_apiErrors : g_otherErrors).fetch_add(1);
+    countError(line); // counted and kept even when the log below drops it
+  }
+  if (severity == GL_DEBUG_SEVERITY_NOTIFICATION && !debugLog) return;
 
   int seen = 0;
   {
@@ -68,9 +95,6 @@ void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum s
     seen = ++g_repeats[{source, type, id}];
   }
   if (seen > kMaxRepeats) return;
-  std::string text = length >= 0 ? std::string(message, static_cast<size_t>(length)) : message;
-  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-  std::string line = std::string("GL ") + sourceName(source) + " " + typeName(type) + ": " + text;
   if (seen == kMaxRepeats) line += " (further repeats are counted, not logged)";
   if (isError)
     logWarn(line);
@@ -100,6 +124,7 @@ std::string glErrorName(GLenum error) {
 }
 
 void installDebugOutput() {
+  // Errors left on the previous context are in the total already; the frame counter starts afresh.
   g_debugOutput = false;
   g_maxLabelLength = 0;
   g_apiErrors = 0;
@@ -110,6 +135,7 @@ void installDebugOutput() {
   }
   if (!hasDebugApi()) {
     logDebug("GL debug output unavailable (no KHR_debug); errors are counted with glGetError only");
+    drainGlErrors(); // the context's errors so far: in the total, not in the first frame
     return;
   }
   glGetIntegerv(GL_MAX_LABEL_LENGTH, &g_maxLabelLength);
@@ -123,17 +149,15 @@ void installDebugOutput() {
   glDebugMessageControl(GL_DONT_CARE, GL_DEBUG_TYPE_PUSH_GROUP, GL_DONT_CARE, 0, nullptr, GL_FALSE);
   glDebugMessageControl(GL_DONT_CARE, GL_DEBUG_TYPE_POP_GROUP, GL_DONT_CARE, 0, nullptr, GL_FALSE);
   g_debugOutput = true;
-  // Setting up debug output must not count as an error of the first frame.
-  while (glGetError() != GL_NO_ERROR) {
-  }
-  g_apiErrors = 0;
-  g_otherErrors = 0;
+  // Errors made before the callback was installed (context creation, the calls above) are found by
+  // glGetError: they count in the process total, not in the first frame.
+  drainGlErrors();
 }
 
 int drainGlErrors() {
-  int polled = 0;
-  for (GLenum e = glGetError(); e != GL_NO_ERROR && polled < kMaxErrorDrain; e = glGetError()) {
-    ++polled;
+  std::vector<GLenum> codes;
+  for (GLenum e = glGetError(); e != GL_NO_ERROR && int(codes.size()) < kMaxErrorDrain; e = glGetError()) {
+    codes.push_back(e);
     // With debug output on, the callback has already logged the message with its text.
     if (g_debugOutput)
       logDebug("glGetError: " + glErrorName(e));
@@ -144,8 +168,32 @@ int drainGlErrors() {
   const int api = g_apiErrors.exchange(0);
   const int other = g_otherErrors.exchange(0);
   // One API error is reported both by glGetError and by a debug message; glGetError keeps only the
-  // first of several, the callback sees all of them.
-  return std::max(polled, api) + other;
+  // first of several, the callback sees all of them (and has counted them in the total already).
+  const int polled = int(codes.size());
+  const int unreported = std::max(polled - api, 0);
+  for (int i = polled - unreported; i < polled; ++i)
+    countError("glGetError: " + glErrorName(codes[size_t(i)]) + " (no debug message)");
+  return api + unreported + other;
+}
+
+std::int64_t glErrorTotal() { return g_total.load(); }
+
+std::vector<std::string> glErrorMessagesSince(std::int64_t mark) {
+  std::vector<std::string> texts;
+  std::lock_guard<std::mutex> lock(g_messageMutex);
+  for (const auto& [n, text] : g_messages)
+    if (n > mark) texts.push_back(text);
+  return texts;
+}
+
+bool appendGlErrorReport(const std::string& path, const std::string& who) {
+  const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd < 0) return false;
+  std::string report = "gl_errors: " + std::to_string(glErrorTotal()) + " " + who + "\n";
+  for (const std::string& text : glErrorMessagesSince(0)) report += "  " + text + "\n";
+  // One append of the whole report, so that reports of processes appending at once do not interleave.
+  const bool written = write(fd, report.data(), report.size()) == static_cast<ssize_t>(report.size());
+  return close(fd) == 0 && written;
 }
 
 void setObjectLabel(GLenum identifier, GLuint name, const std::string& label) {

@@ -87,6 +87,10 @@ void Context::loadGl(ProcLoader getProcAddress, const std::string& backend) {
   m_info.version = glString(GL_VERSION);
   m_info.glsl = glString(GL_SHADING_LANGUAGE_VERSION);
   m_info.software = isSoftwareRenderer(m_info.renderer);
+  GLint flags = 0;
+  glGetIntegerv(GL_CONTEXT_FLAGS, &flags);
+  logDebug(backend + ((flags & GL_CONTEXT_FLAG_DEBUG_BIT) != 0 ? ": debug context"
+                                                               : ": no debug context (debug output enabled on a plain one)"));
   installDebugOutput();
 }
 

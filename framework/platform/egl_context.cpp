@@ -101,10 +101,21 @@ public:
       if (!eglChooseConfig(m_display, wanted, &config, 1, &count) || count < 1)
         fail("no EGLConfig with EGL_OPENGL_BIT");
     }
-    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION_KHR, 4, EGL_CONTEXT_MINOR_VERSION_KHR, 5,
-                              EGL_CONTEXT_OPENGL_PROFILE_MASK_KHR,
-                              EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT_KHR, EGL_NONE};
+    // A debug context (docs/architecture.md "GL errors"): EGL 1.5's EGL_CONTEXT_OPENGL_DEBUG, or
+    // EGL_KHR_create_context's debug bit before 1.5.
+    const bool egl15 = major > 1 || (major == 1 && minor >= 5);
+    const EGLint debugAttrib = egl15 ? EGL_CONTEXT_OPENGL_DEBUG : EGL_CONTEXT_FLAGS_KHR;
+    const EGLint debugValue = egl15 ? EGL_TRUE : EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR;
+    EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION_KHR, 4, EGL_CONTEXT_MINOR_VERSION_KHR, 5,
+                        EGL_CONTEXT_OPENGL_PROFILE_MASK_KHR,
+                        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT_KHR, debugAttrib, debugValue, EGL_NONE};
     m_context = eglCreateContext(m_display, config, EGL_NO_CONTEXT, attribs);
+    if (m_context == EGL_NO_CONTEXT) {
+      // A driver without debug contexts still counts errors: installDebugOutput enables the output.
+      logDebug(m_name + ": no debug context (" + eglErrorName(eglGetError()) + "), asking for a plain one");
+      attribs[6] = EGL_NONE; // drops the debug pair
+      m_context = eglCreateContext(m_display, config, EGL_NO_CONTEXT, attribs);
+    }
     if (m_context == EGL_NO_CONTEXT) failEgl("eglCreateContext(OpenGL 4.5 core)");
     if (!eglMakeCurrent(m_display, EGL_NO_SURFACE, EGL_NO_SURFACE, m_context))
       failEgl("eglMakeCurrent(surfaceless)");

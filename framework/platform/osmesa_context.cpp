@@ -34,6 +34,9 @@ public:
       osmesaFail("OSMesaMakeCurrent failed");
   }
 
+  // OSMesa has no debug-context attribute: installDebugOutput (Context::loadGl) enables
+  // GL_DEBUG_OUTPUT and its callback on this plain context, which counts errors all the same
+  // (docs/architecture.md "GL errors"; the render test GlErrors.DebugOutputReportsAnError checks it).
   void init() {
     const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA,
                            OSMESA_DEPTH_BITS, 0,

@@ -7,6 +7,7 @@
 #include "frame/frame_graph.h"
 #include "frame/frame_view.h"
 #include "gl/debug.h"
+#include "gl_error_check.h"
 #include "scene/load.h"
 #include "scene/scene_params.h"
 
@@ -118,6 +119,10 @@ bool ranPass(const Renderer& renderer, const std::string& prefix) {
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
+  // Every GL error fails the test it happened in; the global set-up and teardown are checked here
+  // (docs/testing.md "GL errors").
+  rtlab::installGlErrorListener();
+  const std::int64_t beforeSetUp = rtlab::glErrorTotal();
   try {
     // RTLAB_TEST_BACKEND=egl|osmesa runs the whole binary on one backend (default: auto).
     const char* backend = std::getenv("RTLAB_TEST_BACKEND");
@@ -128,10 +133,15 @@ int main(int argc, char** argv) {
   }
   std::printf("render tests on %s (%s)\n", rtlab::g_context->info().renderer.c_str(),
               rtlab::g_context->backendName().c_str());
+  bool clean = rtlab::noGlErrorsOutsideTests("global set-up (context creation)", beforeSetUp);
   // Every frame the tests render checks the GL state before and after each pass (docs/frame-graph.md).
   rtlab::FrameGraph::setStateCheckDefault(true);
-  const int rc = RUN_ALL_TESTS();
+  int rc = RUN_ALL_TESTS();
+  const std::int64_t beforeTeardown = rtlab::glErrorTotal();
+  rtlab::g_context->makeCurrent();
   rtlab::releaseTestRenderers();
+  clean = rtlab::noGlErrorsOutsideTests("global teardown (the shared renderers' GL objects)", beforeTeardown) && clean;
   rtlab::g_context.reset();
-  return rc;
+  rtlab::reportRenderTestGlErrors();
+  return clean ? rc : 1;
 }
