@@ -78,7 +78,9 @@ dict_parts() {
   esac
 }
 stat_of() { sed -n "s/^stat::$2: *//p" "$1" | tail -1; }
-cov_of() { grep -E "#[0-9]+ +$2 " "$1" | head -1 | sed -n 's/.* cov: \([0-9]*\).*/\1/p'; }
+# The coverage (edges) on libFuzzer's first status line of kind $2 (INITED) or its last (DONE, ...).
+cov_first() { grep -E "^#[0-9]+[[:space:]]+$2 " "$1" | head -1 | sed -n 's/.* cov: \([0-9]*\).*/\1/p'; }
+cov_last() { grep -E "^#[0-9]+[[:space:]]+[A-Z]+ +cov: " "$1" | tail -1 | sed -n 's/.* cov: \([0-9]*\).*/\1/p'; }
 
 failed=0
 printf '%-10s %8s %12s %8s %10s %10s  %s\n' target seconds execs new_units cov_start cov_end findings
@@ -98,8 +100,7 @@ for t in "${targets[@]}"; do
     [[ -n "$findings" ]] || findings="exit $status, see $dir/log.txt"
   fi
   printf '%-10s %8s %12s %8s %10s %10s  %s\n' "$t" "$seconds" "$(stat_of "$dir/log.txt" number_of_executed_units)" \
-    "$(stat_of "$dir/log.txt" new_units_added)" "$(cov_of "$dir/log.txt" INITED)" \
-    "$(grep -E '#[0-9]+ +(DONE|NEW|REDUCE|pulse)' "$dir/log.txt" | tail -1 | sed -n 's/.* cov: \([0-9]*\).*/\1/p')" \
+    "$(stat_of "$dir/log.txt" new_units_added)" "$(cov_first "$dir/log.txt" INITED)" "$(cov_last "$dir/log.txt")" \
     "${findings:-none}"
   if (( merge )) && (( status == 0 )); then
     "build-fuzz/tests/fuzz/fuzz_$t" -merge=1 "tests/fuzz/corpus/$t" "$dir/corpus" >>"$dir/log.txt" 2>&1
