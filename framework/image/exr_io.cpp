@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 
 namespace rtlab::detail {
 namespace {
@@ -132,11 +133,21 @@ Image decodeExr(const std::string& bytes, const std::string& path) {
   for (int c = 0; c < exr.header.num_channels; ++c)
     if (exr.header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF) exr.header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
 
+  // The data window before tinyexr allocates it (a huge window made it throw std::length_error).
+  const EXRBox2i& window = exr.header.data_window;
+  checkImageSize(static_cast<long long>(window.max_x) - window.min_x + 1,
+                 static_cast<long long>(window.max_y) - window.min_y + 1, path);
+
   // tinyexr 1.0.1 frees a half-decoded image itself but only frees as many planes as
   // image.num_channels says, which it sets after decoding; preset it so corrupt files do not leak.
   exr.image.num_channels = exr.header.num_channels;
   err = nullptr;
-  rc = LoadEXRImageFromMemory(&exr.image, &exr.header, data, bytes.size(), &err);
+  try {
+    rc = LoadEXRImageFromMemory(&exr.image, &exr.header, data, bytes.size(), &err);
+  } catch (const std::exception&) { // std::length_error, std::bad_alloc: tinyexr sizes its tables from
+                                      // other header fields too (the chunk count, the channels)
+    invalidImageFile(path, "invalid EXR data: a table size in the file is out of range");
+  }
   if (rc != TINYEXR_SUCCESS) invalidImageFile(path, "invalid EXR data: " + takeMessage(err, rc));
   exr.imageLoaded = true;
   if (!exr.image.images || exr.image.width <= 0 || exr.image.height <= 0)
