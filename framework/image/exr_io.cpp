@@ -5,6 +5,8 @@
 
 #include <tinyexr.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
@@ -118,12 +120,48 @@ std::string encodeExr(const Image& image, const std::string& path) {
   return bytes;
 }
 
+// Debian's tinyexr keeps its assert()s, and ParseEXRHeaderFromMemory asserts on a "type"
+// attribute other than scanlineimage/tiledimage/deeptile/deepscanline or one that contradicts
+// the version's tiled flag: a crafted file aborted rtlab (found by fuzzing, docs/testing.md
+// "Fuzzing"). The single-part header's attributes (name, type name, int32 size, value) are
+// therefore read here first, and a "type" other than a scanline image is rejected.
+namespace {
+
+void checkExrTypeAttribute(const std::string& bytes, const std::string& path) {
+  std::size_t pos = 8; // magic and version
+  auto cString = [&](const char* what) {
+    const std::size_t end = bytes.find('\0', pos);
+    if (end == std::string::npos) invalidImageFile(path, std::string("invalid EXR header: truncated ") + what);
+    std::string text = bytes.substr(pos, end - pos);
+    pos = end + 1;
+    return text;
+  };
+  while (true) {
+    const std::string name = cString("attribute name");
+    if (name.empty()) return; // end of the header
+    cString("attribute type");
+    if (bytes.size() - pos < 4) invalidImageFile(path, "invalid EXR header: truncated attribute size");
+    std::int32_t size = 0;
+    std::memcpy(&size, bytes.data() + pos, 4); // little-endian, as the file
+    pos += 4;
+    if (size < 0 || std::size_t(size) > bytes.size() - pos)
+      invalidImageFile(path, "invalid EXR header: attribute '" + name + "' runs past the end of the file");
+    if (name == "type" && bytes.compare(pos, std::size_t(size), "scanlineimage") != 0)
+      invalidImageFile(path, "only scanline EXR images are supported (type '" + bytes.substr(pos, std::min<std::size_t>(std::size_t(size), 40)) + "')");
+    pos += std::size_t(size);
+  }
+}
+
+} // namespace
+
 Image decodeExr(const std::string& bytes, const std::string& path) {
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
   EXRVersion version;
   if (ParseEXRVersionFromMemory(&version, data, bytes.size()) != TINYEXR_SUCCESS)
     invalidImageFile(path, "not an OpenEXR file");
   if (version.multipart || version.non_image) invalidImageFile(path, "multi-part and deep EXR files are not supported");
+  if (version.tiled) invalidImageFile(path, "tiled EXR files are not supported");
+  checkExrTypeAttribute(bytes, path);
 
   LoadedExr exr;
   const char* err = nullptr;
