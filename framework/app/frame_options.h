@@ -3,6 +3,7 @@
 // order: defaults < --preset < -t < --set.
 #pragma once
 #include "app/args.h"
+#include "app/frame_option_specs.h"
 #include "frame/pass_timer.h"
 #include "params/param_set.h"
 #include "platform/context.h"
@@ -12,8 +13,6 @@
 #include <vector>
 
 namespace rtlab {
-
-std::vector<OptionSpec> frameOptionSpecs();
 
 struct FrameOptions {
   std::string sceneSpec;              // resolved scene argument ("contact" by default)
@@ -41,9 +40,6 @@ ResolvedFrame resolveFrame(const Args& args);
 // and tests that set frames up in code.
 ResolvedFrame makeResolvedFrame(const std::string& sceneSpec, const std::string& techniques,
                                 const FrameOptions& options = {});
-
-// "640x360" -> width, height in 1..8192; Error(Usage) otherwise.
-void parseSize(const std::string& text, int& width, int& height);
 
 // Writes --save-preset if it was given.
 void saveRequestedPreset(const ResolvedFrame& frame);

@@ -5,8 +5,11 @@
 
 #include <tinyexr.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 
 namespace rtlab::detail {
 namespace {
@@ -117,12 +120,48 @@ std::string encodeExr(const Image& image, const std::string& path) {
   return bytes;
 }
 
+// Debian's tinyexr keeps its assert()s, and ParseEXRHeaderFromMemory asserts on a "type"
+// attribute other than scanlineimage/tiledimage/deeptile/deepscanline or one that contradicts
+// the version's tiled flag: a crafted file aborted rtlab (found by fuzzing, docs/testing.md
+// "Fuzzing"). The single-part header's attributes (name, type name, int32 size, value) are
+// therefore read here first, and a "type" other than a scanline image is rejected.
+namespace {
+
+void checkExrTypeAttribute(const std::string& bytes, const std::string& path) {
+  std::size_t pos = 8; // magic and version
+  auto cString = [&](const char* what) {
+    const std::size_t end = bytes.find('\0', pos);
+    if (end == std::string::npos) invalidImageFile(path, std::string("invalid EXR header: truncated ") + what);
+    std::string text = bytes.substr(pos, end - pos);
+    pos = end + 1;
+    return text;
+  };
+  while (true) {
+    const std::string name = cString("attribute name");
+    if (name.empty()) return; // end of the header
+    cString("attribute type");
+    if (bytes.size() - pos < 4) invalidImageFile(path, "invalid EXR header: truncated attribute size");
+    std::int32_t size = 0;
+    std::memcpy(&size, bytes.data() + pos, 4); // little-endian, as the file
+    pos += 4;
+    if (size < 0 || std::size_t(size) > bytes.size() - pos)
+      invalidImageFile(path, "invalid EXR header: attribute '" + name + "' runs past the end of the file");
+    if (name == "type" && bytes.compare(pos, std::size_t(size), "scanlineimage") != 0)
+      invalidImageFile(path, "only scanline EXR images are supported (type '" + bytes.substr(pos, std::min<std::size_t>(std::size_t(size), 40)) + "')");
+    pos += std::size_t(size);
+  }
+}
+
+} // namespace
+
 Image decodeExr(const std::string& bytes, const std::string& path) {
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
   EXRVersion version;
   if (ParseEXRVersionFromMemory(&version, data, bytes.size()) != TINYEXR_SUCCESS)
     invalidImageFile(path, "not an OpenEXR file");
   if (version.multipart || version.non_image) invalidImageFile(path, "multi-part and deep EXR files are not supported");
+  if (version.tiled) invalidImageFile(path, "tiled EXR files are not supported");
+  checkExrTypeAttribute(bytes, path);
 
   LoadedExr exr;
   const char* err = nullptr;
@@ -132,11 +171,21 @@ Image decodeExr(const std::string& bytes, const std::string& path) {
   for (int c = 0; c < exr.header.num_channels; ++c)
     if (exr.header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF) exr.header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
 
+  // The data window before tinyexr allocates it (a huge window made it throw std::length_error).
+  const EXRBox2i& window = exr.header.data_window;
+  checkImageSize(static_cast<long long>(window.max_x) - window.min_x + 1,
+                 static_cast<long long>(window.max_y) - window.min_y + 1, path);
+
   // tinyexr 1.0.1 frees a half-decoded image itself but only frees as many planes as
   // image.num_channels says, which it sets after decoding; preset it so corrupt files do not leak.
   exr.image.num_channels = exr.header.num_channels;
   err = nullptr;
-  rc = LoadEXRImageFromMemory(&exr.image, &exr.header, data, bytes.size(), &err);
+  try {
+    rc = LoadEXRImageFromMemory(&exr.image, &exr.header, data, bytes.size(), &err);
+  } catch (const std::exception&) { // std::length_error, std::bad_alloc: tinyexr sizes its tables from
+                                      // other header fields too (the chunk count, the channels)
+    invalidImageFile(path, "invalid EXR data: a table size in the file is out of range");
+  }
   if (rc != TINYEXR_SUCCESS) invalidImageFile(path, "invalid EXR data: " + takeMessage(err, rc));
   exr.imageLoaded = true;
   if (!exr.image.images || exr.image.width <= 0 || exr.image.height <= 0)

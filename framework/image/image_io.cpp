@@ -20,6 +20,15 @@ void invalidImageFile(const std::string& path, const std::string& reason) {
   inputError("cannot read image '" + path + "': " + reason);
 }
 
+void checkImageSize(long long width, long long height, const std::string& path) {
+  if (width <= 0 || height <= 0)
+    invalidImageFile(path, "invalid size " + std::to_string(width) + "x" + std::to_string(height));
+  if (width > kMaxImagePixels / height)
+    invalidImageFile(path, "the image is " + std::to_string(width) + "x" + std::to_string(height) +
+                               " pixels, more than the " + std::to_string(kMaxImagePixels) +
+                               " (8192x8192) rtlab reads");
+}
+
 void validateImage(const Image& image, const std::string& path) {
   auto fail = [&](const std::string& what) {
     throw Error(ExitCode::Internal, "invalid image for '" + path + "': " + what);

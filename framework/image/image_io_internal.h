@@ -13,6 +13,15 @@ namespace rtlab::detail {
 // Throws Error(Input): "cannot read image 'PATH': REASON".
 [[noreturn]] void invalidImageFile(const std::string& path, const std::string& reason);
 
+// The most pixels a PNG or EXR decoder allocates: 8192 x 8192, the largest frame rtlab renders
+// (--size). Those formats state their size in a header that a few bytes of a file can set to any
+// value, and the decoding libraries allocate it before they find the data missing; a larger
+// image is Error(Input) before decoding (found by fuzzing, docs/testing.md "Fuzzing"). PFM needs
+// no cap: its pixels are stored uncompressed, so the file's size bounds the allocation.
+inline constexpr long long kMaxImagePixels = 8192LL * 8192LL;
+// Error(Input) naming the path unless 0 < width, height and width * height <= kMaxImagePixels.
+void checkImageSize(long long width, long long height, const std::string& path);
+
 // Throws Error(Internal) unless width, height > 0, channels is 1 or 3, pixels.size() matches and
 // mask is empty or holds one value per pixel. `path` only names the image in the message.
 void validateImage(const Image& image, const std::string& path);

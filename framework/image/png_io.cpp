@@ -58,6 +58,25 @@ void normalizeRange(const Image& image, std::vector<std::uint8_t>& out) {
   }
 }
 
+// stb_image trusts each chunk's length: an IDAT chunk claiming 2 GiB in a 100-byte file makes it
+// allocate 2 GiB before it finds the data missing (found by fuzzing, docs/testing.md "Fuzzing").
+// Every chunk up to IEND must therefore lie inside the file: length (4 bytes, big-endian), type,
+// data, CRC.
+void checkPngChunks(const std::string& bytes, const std::string& path) {
+  std::size_t pos = sizeof(kPngSignature);
+  while (pos < bytes.size()) {
+    if (bytes.size() - pos < 12) invalidImageFile(path, "invalid PNG: truncated chunk at byte " + std::to_string(pos));
+    const auto* p = reinterpret_cast<const unsigned char*>(bytes.data() + pos);
+    const std::size_t length = std::size_t(p[0]) << 24 | std::size_t(p[1]) << 16 | std::size_t(p[2]) << 8 | p[3];
+    if (length > bytes.size() - pos - 12)
+      invalidImageFile(path, "invalid PNG: the chunk at byte " + std::to_string(pos) + " claims " +
+                                 std::to_string(length) + " bytes, past the end of the file");
+    const bool end = std::equal(p + 4, p + 8, "IEND");
+    pos += 12 + length;
+    if (end) break;
+  }
+}
+
 [[noreturn]] void stbFailure(const std::string& path) {
   const char* reason = stbi_failure_reason();
   invalidImageFile(path, "invalid PNG: " + oneLine(reason ? reason : "decoder failed"));
@@ -112,9 +131,11 @@ Image decodePng(const std::string& bytes, const std::string& path) {
     invalidImageFile(path, "not a PNG file");
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int size = int(std::min<std::size_t>(bytes.size(), std::size_t(std::numeric_limits<int>::max())));
+  checkPngChunks(bytes, path);
   int w = 0, h = 0, fileChannels = 0;
   if (!stbi_info_from_memory(data, size, &w, &h, &fileChannels))
     stbFailure(path);
+  checkImageSize(w, h, path);
   // Gray and gray+alpha -> 1 channel; RGB, RGBA and palette -> 3 channels. Alpha is dropped.
   const int channels = fileChannels <= 2 ? 1 : 3;
   const bool sixteen = stbi_is_16_bit_from_memory(data, size) != 0;
