@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up and runs every test under the sanitizers (docs/testing.md, "Sanitizers"):
 #   build-asan/  the whole program (rtlab, the libraries, every test executable) with
-#                AddressSanitizer + UndefinedBehaviorSanitizer at -O1 -g1; ctest runs the whole
+#                AddressSanitizer + UndefinedBehaviorSanitizer (Debug: -O0 -g); ctest runs the whole
 #                suite there: unit, render (headless on llvmpipe), command-line (they run the
 #                sanitized build-asan/rtlab) and the fuzz-corpus replays.
 #   build-tsan/  ThreadSanitizer over the progressive reference's thread tests (rtlab_tsan_tests).
@@ -22,17 +22,13 @@ bash scripts/check_build_dir.sh build-tsan tsan
 bash scripts/setup.sh --test-deps --no-build
 jobs=$(nproc 2>/dev/null || echo 2)
 export RTLAB_LOG=${RTLAB_LOG:-warn}
-# -O1, not -O0: the CLI tests run rtlab (metrics, grading) hundreds of times and the render tests
-# build SDFs on the CPU; -g1: line tables for the reports' stacks. No NDEBUG: asserts stay on.
-sanitizer_flags="-O1 -g1"
 
 # build DIR KIND TARGET CMAKE_OPTIONS...: configures DIR once, then builds TARGET into it.
 build() {
   local dir=$1 kind=$2 target=$3
   shift 3
   if [[ ! -f $dir/CMakeCache.txt ]]; then
-    cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$sanitizer_flags" \
-      "-DCMAKE_C_FLAGS_RELWITHDEBINFO=$sanitizer_flags" "$@" >/dev/null
+    cmake -S . -B "$dir" "$@" >/dev/null
   fi
   echo "test: building $dir/ (log in $dir/build.log)" >&2
   if ! cmake --build "$dir" -j"$jobs" --target "$target" >"$dir/build.log" 2>&1; then
@@ -68,14 +64,20 @@ export LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=suppressions=$supp/ubsan.supp:print_stacktrace=1:halt_on_error=1:abort_on_error=1:log_path=$asan_logs/ubsan
 export TSAN_OPTIONS=suppressions=$supp/tsan.supp:halt_on_error=1:abort_on_error=1:history_size=7:second_deadlock_stack=1:log_path=$tsan_logs/tsan
 
-build build-asan "ASan + UBSan" all -DRTLAB_SANITIZE=ON
+# Debug (-O0 -g, asserts on): instrumented, -O1 costs 2.3x the compile time of -O0
+# (docs/performance.md, "Issue 20: one sanitized build").
+build build-asan "ASan + UBSan" all -DCMAKE_BUILD_TYPE=Debug -DRTLAB_SANITIZE=ON
 took "set-up and ASan + UBSan build"
 echo "== every test under ASan + UBSan (build-asan/) =="
 (cd build-asan && ctest --output-on-failure --no-tests=error -j"$jobs") || { check_logs build-asan || true; exit 1; }
 check_logs build-asan
 took "tests under ASan + UBSan"
 
-build build-tsan "ThreadSanitizer" rtlab_tsan_tests -DRTLAB_TSAN=ON -DRTLAB_UNIT_ONLY=ON
+# -O1 -g1 without NDEBUG: the reference's tests trace rays for seconds; at -O0 under TSan they would
+# take several times as long.
+flags="-O1 -g1"
+build build-tsan "ThreadSanitizer" rtlab_tsan_tests -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$flags" \
+  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=$flags" -DRTLAB_TSAN=ON -DRTLAB_UNIT_ONLY=ON
 took "ThreadSanitizer build"
 echo "== the reference's thread tests under ThreadSanitizer (build-tsan/) =="
 (cd build-tsan && ctest --output-on-failure --no-tests=error -j"$jobs") || { check_logs build-tsan || true; exit 1; }
