@@ -2,7 +2,9 @@
 # Installs rtlab's Debian 12 packages when any is missing (as root, non-interactive, one
 # 'apt-get update'), then configures and builds into build/ (Release). Idempotent: with every
 # package present and the build up to date it only runs the (no-op) incremental build.
-#   bash scripts/setup.sh [--test-deps]   --test-deps also installs what the tests need
+#   bash scripts/setup.sh [--test-deps] [--no-build]
+#     --test-deps  also installs what the tests need
+#     --no-build   installs only (scripts/test.sh builds its own sanitized directories)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -19,7 +21,14 @@ packages+=(fonts-dejavu-core)
 # What only the tests use: Xvfb runs the window path under a virtual display; Chromium opens
 # the HTML reports headless.
 test_packages=(xvfb xauth chromium)
-if [[ "${1:-}" == "--test-deps" ]]; then packages+=("${test_packages[@]}"); fi
+build=1
+for arg in "$@"; do
+  case $arg in
+    --test-deps) packages+=("${test_packages[@]}") ;;
+    --no-build) build=0 ;;
+    *) echo "setup: error: unknown option '$arg' (usage: setup.sh [--test-deps] [--no-build])" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
@@ -36,6 +45,7 @@ if ((${#missing[@]})); then
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
+((build)) || exit 0
 jobs=$(nproc 2>/dev/null || echo 2)
 if [[ ! -f build/CMakeCache.txt ]]; then
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null

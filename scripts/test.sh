@@ -1,34 +1,86 @@
 #!/usr/bin/env bash
-# Sets up, builds, and runs every test: unit, render (headless on llvmpipe) and command-line
-# tests with ctest, then the unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer.
+# Sets up and runs every test under the sanitizers (docs/testing.md, "Sanitizers"):
+#   build-asan/  the whole program (rtlab, the libraries, every test executable) with
+#                AddressSanitizer + UndefinedBehaviorSanitizer (Debug: -O0 -g); ctest runs the whole
+#                suite there: unit, render (headless on llvmpipe), command-line (they run the
+#                sanitized build-asan/rtlab) and the fuzz-corpus replays.
+#   build-tsan/  ThreadSanitizer over the progressive reference's thread tests (rtlab_tsan_tests).
+# It does not build build/ (the Release build that the README's other commands use): see
+# docs/performance.md, "Issue 20: one sanitized build", for why and what that costs.
 # Each step prints its wall time (docs/performance.md, "Test suite and CI", has the measured ones).
+# Any sanitizer report (in a test, in rtlab run by a CLI test, in a child process) fails the run:
+# the reports are written under build-asan/sanitizer-logs/ and build-tsan/sanitizer-logs/ and
+# printed at the end.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 took() { echo "test: $1 took $((SECONDS - step_start)) s" >&2; step_start=$SECONDS; }
 step_start=$SECONDS
-# A build directory configured without the render and CLI tests (or build-asan/ without the
-# sanitizers) would pass with tests silently missing: refuse it before building.
-bash scripts/check_build_dir.sh build full
+# A build directory configured without the sanitizers or without the render and CLI tests would
+# pass with checks silently missing: refuse it before building.
 bash scripts/check_build_dir.sh build-asan sanitizer
-bash scripts/setup.sh --test-deps
-took "set-up and build"
+bash scripts/check_build_dir.sh build-tsan tsan
+bash scripts/setup.sh --test-deps --no-build
 jobs=$(nproc 2>/dev/null || echo 2)
 export RTLAB_LOG=${RTLAB_LOG:-warn}
 
-echo "== unit, render and CLI tests (build/) =="
-(cd build && ctest --output-on-failure --no-tests=error -j"$jobs")
-took "unit, render and CLI tests"
+# build DIR KIND TARGET CMAKE_OPTIONS...: configures DIR once, then builds TARGET into it.
+build() {
+  local dir=$1 kind=$2 target=$3
+  shift 3
+  if [[ ! -f $dir/CMakeCache.txt ]]; then
+    cmake -S . -B "$dir" "$@" >/dev/null
+  fi
+  echo "test: building $dir/ (log in $dir/build.log)" >&2
+  if ! cmake --build "$dir" -j"$jobs" --target "$target" >"$dir/build.log" 2>&1; then
+    grep -E "error|Error" "$dir/build.log" | head -20 >&2 || true
+    check_logs "$dir" || true # a report while gtest listed a test executable's tests
+    echo "test: error: the $kind build failed; see $dir/build.log" >&2
+    exit 1
+  fi
+}
 
-echo "== unit tests under ASan + UBSan (build-asan/) =="
-if [[ ! -f build-asan/CMakeCache.txt ]]; then
-  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DRTLAB_SANITIZE=ON -DRTLAB_UNIT_ONLY=ON >/dev/null
-fi
-if ! cmake --build build-asan -j"$jobs" >build-asan/build.log 2>&1; then
-  grep -E "error|Error" build-asan/build.log | head -20 >&2 || true
-  echo "test: error: the sanitizer build failed; see build-asan/build.log" >&2
-  exit 1
-fi
-took "sanitizer build"
-export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-(cd build-asan && ctest --output-on-failure --no-tests=error -j"$jobs")
-took "sanitizer unit tests"
+# Fails the run when DIR/sanitizer-logs/ holds a report (printing them all).
+check_logs() {
+  local logs=$1/sanitizer-logs
+  if compgen -G "$logs/*" >/dev/null; then
+    for f in "$logs"/*; do
+      echo "== $f" >&2
+      cat "$f" >&2
+    done
+    echo "test: error: sanitizer reports in $logs/ (above)" >&2
+    return 1
+  fi
+}
+
+# halt_on_error/abort_on_error: the first report ends the process; log_path: reports go to files
+# (a CLI test reads rtlab's stderr line by line, and a report must fail the run whatever the test
+# asserts about exit codes); detect_leaks: LeakSanitizer at every exit. Exported before the builds
+# too: gtest_discover_tests runs each test executable at build time. The suppressions, each with
+# its reason, are Mesa's and TBB's/Embree's alone (tests/sanitizers/).
+supp=$PWD/tests/sanitizers
+asan_logs=$PWD/build-asan/sanitizer-logs tsan_logs=$PWD/build-tsan/sanitizer-logs
+rm -rf "$asan_logs" "$tsan_logs" && mkdir -p "$asan_logs" "$tsan_logs"
+export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1:log_path=$asan_logs/asan
+export LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0
+export UBSAN_OPTIONS=suppressions=$supp/ubsan.supp:print_stacktrace=1:halt_on_error=1:abort_on_error=1:log_path=$asan_logs/ubsan
+export TSAN_OPTIONS=suppressions=$supp/tsan.supp:halt_on_error=1:abort_on_error=1:history_size=7:second_deadlock_stack=1:log_path=$tsan_logs/tsan
+
+# Debug (-O0 -g, asserts on): instrumented, -O1 compiles far slower than -O0 (exercise_def.cpp:
+# 65.8 s against 28.1 s; docs/performance.md, "Issue 20: one sanitized build").
+build build-asan "ASan + UBSan" all -DCMAKE_BUILD_TYPE=Debug -DRTLAB_SANITIZE=ON
+took "set-up and ASan + UBSan build"
+echo "== every test under ASan + UBSan (build-asan/) =="
+(cd build-asan && ctest --output-on-failure --no-tests=error -j"$jobs") || { check_logs build-asan || true; exit 1; }
+check_logs build-asan
+took "tests under ASan + UBSan"
+
+# -O1 -g1 without NDEBUG for the one small library: its tests trace rays and wait for the
+# progressive reference to converge (27 tests, about 60 s at -j2 on the loaded 2-core machine).
+flags="-O1 -g1"
+build build-tsan "ThreadSanitizer" rtlab_tsan_tests -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$flags" \
+  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=$flags" -DRTLAB_TSAN=ON -DRTLAB_UNIT_ONLY=ON
+took "ThreadSanitizer build"
+echo "== the reference's thread tests under ThreadSanitizer (build-tsan/) =="
+(cd build-tsan && ctest --output-on-failure --no-tests=error -j"$jobs") || { check_logs build-tsan || true; exit 1; }
+check_logs build-tsan
+took "tests under ThreadSanitizer"

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <vector>
 
+#include "platform/dri_driver.h"
 #include "util/error.h"
 #include "util/log.h"
 
@@ -89,6 +90,7 @@ public:
       m_display = EGL_NO_DISPLAY; // nothing to terminate
       failEgl("eglInitialize");
     }
+    keepDriDriversResident();
     const char* exts = eglQueryString(m_display, EGL_EXTENSIONS);
     if (!hasExtension(exts, "EGL_KHR_surfaceless_context")) fail("no EGL_KHR_surfaceless_context");
     if (!eglBindAPI(EGL_OPENGL_API)) failEgl("eglBindAPI(EGL_OPENGL_API)");

@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 
+#include "platform/dri_driver.h"
 #include "util/error.h"
 #include "util/log.h"
 
@@ -59,6 +60,7 @@ public:
       throw Error(ExitCode::NoContext,
                   "could not open a window with OpenGL 4.5 core: " + lastError());
     glfwMakeContextCurrent(m_window);
+    keepDriDriversResident();
     glfwSwapInterval(1);
     loadGl(&glfwGetProcAddress, "glfw");
   }

@@ -1,6 +1,6 @@
-// scripts/check_build_dir.sh, which scripts/test.sh runs before building: a build directory
-// configured without the render and CLI tests (or a sanitizer directory without the sanitizers,
-// or any without tests) is refused with one line and exit 1, so the suite never passes with tests
+// scripts/check_build_dir.sh, which scripts/test.sh runs before building: a sanitizer build
+// directory configured without the sanitizers or without the render and CLI tests (a TSan
+// directory without TSan, or any without tests) is refused with one line and exit 1, so the suite never passes with tests
 // silently missing; a fresh directory or a fitting one passes.
 #include "process.h"
 
@@ -29,35 +29,44 @@ rtlab::test::ProcessResult check(const fs::path& dir, const std::string& kind) {
                     30);
 }
 
-TEST(CheckBuildDir, RefusesABuildWithoutRenderAndCliTests) {
-  const auto unitOnly = check(buildDir("unit_only", "RTLAB_UNIT_ONLY:BOOL=ON\nBUILD_TESTING:BOOL=ON\n"), "full");
+TEST(CheckBuildDir, RefusesASanitizerBuildWithoutRenderAndCliTests) {
+  const auto unitOnly =
+      check(buildDir("unit_only", "RTLAB_SANITIZE:BOOL=ON\nRTLAB_UNIT_ONLY:BOOL=ON\nBUILD_TESTING:BOOL=ON\n"), "sanitizer");
   EXPECT_EQ(unitOnly.exitCode, 1) << unitOnly.err;
   EXPECT_NE(unitOnly.err.find("RTLAB_UNIT_ONLY=ON: it has no render or CLI tests"), std::string::npos) << unitOnly.err;
-  const auto noTests = check(buildDir("no_tests", "RTLAB_UNIT_ONLY:BOOL=OFF\nBUILD_TESTING:BOOL=OFF\n"), "full");
+  const auto noTests =
+      check(buildDir("no_tests", "RTLAB_SANITIZE:BOOL=ON\nRTLAB_UNIT_ONLY:BOOL=OFF\nBUILD_TESTING:BOOL=OFF\n"), "sanitizer");
   EXPECT_EQ(noTests.exitCode, 1) << noTests.err;
   EXPECT_NE(noTests.err.find("BUILD_TESTING=OFF"), std::string::npos) << noTests.err;
   // CMake's other spellings of true count too.
-  const auto yes = check(buildDir("unit_only_yes", "RTLAB_UNIT_ONLY:BOOL=yes\n"), "full");
+  const auto yes = check(buildDir("unit_only_yes", "RTLAB_SANITIZE:BOOL=1\nRTLAB_UNIT_ONLY:BOOL=yes\n"), "sanitizer");
   EXPECT_EQ(yes.exitCode, 1) << yes.err;
 }
 
 TEST(CheckBuildDir, RefusesASanitizerDirectoryWithoutTheSanitizers) {
-  const auto plain = check(buildDir("plain", "RTLAB_UNIT_ONLY:BOOL=ON\nRTLAB_SANITIZE:BOOL=OFF\n"), "sanitizer");
+  // A full build (render and CLI tests) whose tests would run unsanitized: the old build/.
+  const auto plain = check(buildDir("plain", "RTLAB_UNIT_ONLY:BOOL=OFF\nRTLAB_SANITIZE:BOOL=OFF\n"), "sanitizer");
   EXPECT_EQ(plain.exitCode, 1) << plain.err;
   EXPECT_NE(plain.err.find("RTLAB_SANITIZE=OFF"), std::string::npos) << plain.err;
+  // Absent means off: a directory configured without the option is not sanitized.
+  EXPECT_EQ(check(buildDir("absent", "BUILD_TESTING:BOOL=ON\n"), "sanitizer").exitCode, 1);
+  const auto noTsan = check(buildDir("no_tsan", "RTLAB_TSAN:BOOL=OFF\nRTLAB_SANITIZE:BOOL=ON\n"), "tsan");
+  EXPECT_EQ(noTsan.exitCode, 1) << noTsan.err;
+  EXPECT_NE(noTsan.err.find("RTLAB_TSAN=OFF"), std::string::npos) << noTsan.err;
+  const auto tsanNoTests = check(buildDir("tsan_no_tests", "RTLAB_TSAN:BOOL=ON\nBUILD_TESTING:BOOL=OFF\n"), "tsan");
+  EXPECT_EQ(tsanNoTests.exitCode, 1) << tsanNoTests.err;
 }
 
 TEST(CheckBuildDir, AcceptsFreshAndFittingDirectories) {
-  EXPECT_EQ(check(buildDir("fresh", ""), "full").exitCode, 0);
-  EXPECT_EQ(check(buildDir("fresh_asan", ""), "sanitizer").exitCode, 0);
-  const auto full = check(buildDir("full", "RTLAB_UNIT_ONLY:BOOL=OFF\nRTLAB_SANITIZE:BOOL=OFF\nBUILD_TESTING:BOOL=ON\n"), "full");
-  EXPECT_EQ(full.exitCode, 0) << full.err;
-  const auto asan = check(buildDir("asan", "RTLAB_UNIT_ONLY:BOOL=ON\nRTLAB_SANITIZE:BOOL=ON\n"), "sanitizer");
+  EXPECT_EQ(check(buildDir("fresh", ""), "sanitizer").exitCode, 0);
+  EXPECT_EQ(check(buildDir("fresh_tsan", ""), "tsan").exitCode, 0);
+  const auto asan =
+      check(buildDir("asan", "RTLAB_UNIT_ONLY:BOOL=OFF\nRTLAB_SANITIZE:BOOL=ON\nBUILD_TESTING:BOOL=ON\n"), "sanitizer");
   EXPECT_EQ(asan.exitCode, 0) << asan.err;
-  // This checkout's own build directory, as scripts/test.sh would check it.
-  const auto own = check(fs::path(RTLAB_BINARY).parent_path(), "full");
-  EXPECT_EQ(own.exitCode, 0) << own.err;
-  EXPECT_EQ(check(buildDir("usage", ""), "other").exitCode, 2);
+  // The TSan build is unit-only by design (it builds rtlab_tsan_tests alone).
+  const auto tsan = check(buildDir("tsan", "RTLAB_UNIT_ONLY:BOOL=ON\nRTLAB_TSAN:BOOL=ON\n"), "tsan");
+  EXPECT_EQ(tsan.exitCode, 0) << tsan.err;
+  EXPECT_EQ(check(buildDir("usage", ""), "full").exitCode, 2);
 }
 
 } // namespace
