@@ -72,6 +72,9 @@ took "set-up and ASan + UBSan build"
 echo "== every test under ASan + UBSan (build-asan/) =="
 (cd build-asan && ctest --output-on-failure --no-tests=error -j"$jobs") || { check_logs build-asan || true; exit 1; }
 check_logs build-asan
+# Every GL error in a test process fails its test; the suite's total (0) is summed from each test
+# binary's report (docs/testing.md, "GL errors").
+bash scripts/gl_error_total.sh build-asan
 took "tests under ASan + UBSan"
 
 # -O1 -g1 without NDEBUG for the one small library: its tests trace rays and wait for the
