@@ -1,27 +1,44 @@
 #!/usr/bin/env bash
-# Sets up and runs every test under the sanitizers (docs/testing.md, "Sanitizers"):
-#   build-asan/  the whole program (rtlab, the libraries, every test executable) with
-#                AddressSanitizer + UndefinedBehaviorSanitizer (Debug: -O0 -g); ctest runs the whole
-#                suite there: unit, render (headless on llvmpipe), command-line (they run the
-#                sanitized build-asan/rtlab) and the fuzz-corpus replays.
+# Sets up, builds and runs every test (docs/testing.md):
+#   build/       Release, the whole program; ctest runs every test: unit, render (headless on
+#                llvmpipe), command-line and the fuzz-corpus replays; then the suite's GL error total.
+#   build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer (Debug) over rtlab_core: the unit
+#                tests and the fuzz-corpus replays (the parsers).
 #   build-tsan/  ThreadSanitizer over the progressive reference's thread tests (rtlab_tsan_tests).
-# It does not build build/ (the Release build that the README's other commands use): see
-# docs/performance.md, "Issue 20: one sanitized build", for why and what that costs.
+#   --sanitize-all  also build-asan-all/: the whole program under ASan + UBSan and the whole suite
+#                there (the rtlab binary, the render and CLI tests). Far more than the 20 minutes
+#                .ci/run may take on the 2-core CI machine, so not part of it (docs/performance.md,
+#                "Issue 20: sanitizers and the CI budget").
 # Each step prints its wall time (docs/performance.md, "Test suite and CI", has the measured ones).
 # Any sanitizer report (in a test, in rtlab run by a CLI test, in a child process) fails the run:
-# the reports are written under build-asan/sanitizer-logs/ and build-tsan/sanitizer-logs/ and
-# printed at the end.
+# the reports are written under <dir>/sanitizer-logs/ and printed at the end.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 took() { echo "test: $1 took $((SECONDS - step_start)) s" >&2; step_start=$SECONDS; }
 step_start=$SECONDS
-# A build directory configured without the sanitizers or without the render and CLI tests would
-# pass with checks silently missing: refuse it before building.
+all=0
+case ${1:-} in
+  --sanitize-all) all=1 ;;
+  "") ;;
+  -h | --help) sed -n '2,16p' "$0"; exit 0 ;;
+  *) echo "test: error: unknown option '$1' (scripts/test.sh [--sanitize-all])" >&2; exit 2 ;;
+esac
+# A build directory configured without the tests it is meant to run would pass with tests silently
+# missing: refuse it before building.
+bash scripts/check_build_dir.sh build full
 bash scripts/check_build_dir.sh build-asan sanitizer
 bash scripts/check_build_dir.sh build-tsan tsan
-bash scripts/setup.sh --test-deps --no-build
+if ((all)); then bash scripts/check_build_dir.sh build-asan-all sanitizer-full; fi
 jobs=$(nproc 2>/dev/null || echo 2)
 export RTLAB_LOG=${RTLAB_LOG:-warn}
+bash scripts/setup.sh --test-deps
+took "set-up and build"
+echo "== unit, render, CLI tests and fuzz replays (build/) =="
+(cd build && ctest --output-on-failure --no-tests=error -j"$jobs")
+# Every GL error in a test process fails its test; the suite's total (0) is summed from each test
+# binary's report (docs/testing.md, "GL errors").
+bash scripts/gl_error_total.sh build
+took "unit, render and CLI tests"
 
 # build DIR KIND TARGET CMAKE_OPTIONS...: configures DIR once, then builds TARGET into it.
 build() {
@@ -58,28 +75,31 @@ check_logs() {
 # too: gtest_discover_tests runs each test executable at build time. The suppressions, each with
 # its reason, are Mesa's and TBB's/Embree's alone (tests/sanitizers/).
 supp=$PWD/tests/sanitizers
-asan_logs=$PWD/build-asan/sanitizer-logs tsan_logs=$PWD/build-tsan/sanitizer-logs
-rm -rf "$asan_logs" "$tsan_logs" && mkdir -p "$asan_logs" "$tsan_logs"
-export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1:log_path=$asan_logs/asan
-export LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0
-export UBSAN_OPTIONS=suppressions=$supp/ubsan.supp:print_stacktrace=1:halt_on_error=1:abort_on_error=1:log_path=$asan_logs/ubsan
-export TSAN_OPTIONS=suppressions=$supp/tsan.supp:halt_on_error=1:abort_on_error=1:history_size=7:second_deadlock_stack=1:log_path=$tsan_logs/tsan
+# sanitize_env DIR: the options below, the reports into DIR/sanitizer-logs/ (emptied first).
+sanitize_env() {
+  local logs=$PWD/$1/sanitizer-logs
+  rm -rf "$logs" && mkdir -p "$logs"
+  export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1:log_path=$logs/asan
+  export LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0
+  export UBSAN_OPTIONS=suppressions=$supp/ubsan.supp:print_stacktrace=1:halt_on_error=1:abort_on_error=1:log_path=$logs/ubsan
+  export TSAN_OPTIONS=suppressions=$supp/tsan.supp:halt_on_error=1:abort_on_error=1:history_size=7:second_deadlock_stack=1:log_path=$logs/tsan
+}
 
-# Debug (-O0 -g, asserts on): instrumented, -O1 compiles far slower than -O0 (exercise_def.cpp:
-# 65.8 s against 28.1 s; docs/performance.md, "Issue 20: one sanitized build").
-build build-asan "ASan + UBSan" all -DCMAKE_BUILD_TYPE=Debug -DRTLAB_SANITIZE=ON
-took "set-up and ASan + UBSan build"
-echo "== every test under ASan + UBSan (build-asan/) =="
+# Debug (-O0, line tables only), asserts on: instrumented, -O1 compiles far slower than -O0
+# (exercise_def.cpp: 65.8 s against 28.1 s; docs/performance.md, "Issue 20").
+debug_flags=(-DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g1 -DCMAKE_C_FLAGS_DEBUG=-g1)
+sanitize_env build-asan
+build build-asan "ASan + UBSan" all "${debug_flags[@]}" -DRTLAB_SANITIZE=ON -DRTLAB_UNIT_ONLY=ON
+took "ASan + UBSan build"
+echo "== unit tests and fuzz replays under ASan + UBSan (build-asan/) =="
 (cd build-asan && ctest --output-on-failure --no-tests=error -j"$jobs") || { check_logs build-asan || true; exit 1; }
 check_logs build-asan
-# Every GL error in a test process fails its test; the suite's total (0) is summed from each test
-# binary's report (docs/testing.md, "GL errors").
-bash scripts/gl_error_total.sh build-asan
 took "tests under ASan + UBSan"
 
 # -O1 -g1 without NDEBUG for the one small library: its tests trace rays and wait for the
-# progressive reference to converge (27 tests, about 60 s at -j2 on the loaded 2-core machine).
+# progressive reference to converge (27 tests).
 flags="-O1 -g1"
+sanitize_env build-tsan
 build build-tsan "ThreadSanitizer" rtlab_tsan_tests -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$flags" \
   "-DCMAKE_C_FLAGS_RELWITHDEBINFO=$flags" -DRTLAB_TSAN=ON -DRTLAB_UNIT_ONLY=ON
 took "ThreadSanitizer build"
@@ -87,3 +107,14 @@ echo "== the reference's thread tests under ThreadSanitizer (build-tsan/) =="
 (cd build-tsan && ctest --output-on-failure --no-tests=error -j"$jobs") || { check_logs build-tsan || true; exit 1; }
 check_logs build-tsan
 took "tests under ThreadSanitizer"
+
+if ((all)); then
+  sanitize_env build-asan-all
+  build build-asan-all "whole-program ASan + UBSan" all "${debug_flags[@]}" -DRTLAB_SANITIZE=ON
+  took "whole-program ASan + UBSan build"
+  echo "== every test under ASan + UBSan (build-asan-all/) =="
+  (cd build-asan-all && ctest --output-on-failure --no-tests=error -j"$jobs") || { check_logs build-asan-all || true; exit 1; }
+  check_logs build-asan-all
+  bash scripts/gl_error_total.sh build-asan-all
+  took "every test under ASan + UBSan"
+fi
