@@ -141,13 +141,16 @@ for t in d["techniques"]:
 ' "$only"
 }
 
-# Renders every job through backend $1 into folder $2 (<technique>.exr and <technique>.json).
+# Renders every job through backend $1 into folder $2 (<technique>.json and the image): with $3 =
+# data, its data AOV (<technique>.exr); with $3 = timings, its whole frame over $frames frames
+# (<technique>.png).
 render_set() {
-  local backend=$1 dir=$2
+  local backend=$1 dir=$2 mode=$3 what
   mkdir -p "$dir"
   while IFS=$'\t' read -r id stage aov scene; do
-    "$rtlab" render --backend "$backend" --scene "$scene" -t "$id" --aov "$aov" --size "$size" \
-      --out "$dir/$id.exr" --stats "$dir/$id.json" "${sets[@]}" 2>"$dir/$id.log" ||
+    if [[ $mode == data ]]; then what=(--aov "$aov" --out "$dir/$id.exr"); else what=(--frames "$frames" --out "$dir/$id.png"); fi
+    "$rtlab" render --backend "$backend" --scene "$scene" -t "$id" --size "$size" "${what[@]}" \
+      --stats "$dir/$id.json" "${sets[@]}" 2>"$dir/$id.log" ||
       { echo "gpu-check: $id failed to render through $backend:" >&2; cat "$dir/$id.log" >&2; return 1; }
   done < "$work/jobs.tsv"
 }
@@ -160,12 +163,7 @@ list_jobs > "$work/jobs.tsv"
 
 # --timings: each technique's whole frame on its showcase scene; the table lists every pass's median.
 if [[ -n $timings_dir ]]; then
-  mkdir -p "$timings_dir"
-  while IFS=$'\t' read -r id stage aov scene; do
-    "$rtlab" render --backend "$backend" --scene "$scene" -t "$id" --size "$size" --frames "$frames" \
-      --out "$timings_dir/$id.png" --stats "$timings_dir/$id.json" "${sets[@]}" 2>"$timings_dir/$id.log" ||
-      { echo "gpu-check: $id failed to render through $backend:" >&2; cat "$timings_dir/$id.log" >&2; exit 1; }
-  done < "$work/jobs.tsv"
+  render_set "$backend" "$timings_dir" timings
   "$py" - "$work/jobs.tsv" "$timings_dir" <<'PYEOF'
 import json, sys
 jobs, folder = sys.argv[1:]
@@ -187,7 +185,7 @@ PYEOF
 fi
 
 if [[ -n $render_only ]]; then
-  render_set "$render_only" "$render_dir"
+  render_set "$render_only" "$render_dir" data
   echo "gpu-check: rendered $(wc -l < "$work/jobs.tsv") techniques through $render_only ($(renderer_of "$render_dir/$(head -1 "$work/jobs.tsv" | cut -f1).json")) into $render_dir"
   exit 0
 fi
@@ -196,8 +194,8 @@ if [[ -n $compare_a ]]; then
   gpu=$compare_a ref=$compare_b
 else
   gpu=$work/egl ref=$work/osmesa
-  render_set egl "$gpu"
-  render_set osmesa "$ref"
+  render_set egl "$gpu" data
+  render_set osmesa "$ref" data
 fi
 first=$(head -1 "$work/jobs.tsv" | cut -f1)
 gpu_renderer=$(renderer_of "$gpu/$first.json")
