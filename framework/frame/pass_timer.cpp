@@ -47,7 +47,9 @@ void PassTimer::beginFrame() {
   m_samples.clear();
   m_used = 0;
   m_workUsed = 0;
-  m_counting = m_countWork && workCountingSupported();
+  // The extension list is read once per process, not per frame (one process has one GL platform).
+  static const bool supported = workCountingSupported();
+  m_counting = m_countWork && supported;
   glFinish(); // the frame's wall time starts with an idle GPU
   m_frameStart = Clock::now();
 }
